@@ -1,0 +1,28 @@
+// coinspect: cooperative multi-UAV exploration and inspection, simulated.
+#include <cstdio>
+#include <exception>
+
+#include "coinspect/core/error.h"
+#include "coinspect/core/version.h"
+#include "commands.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"coinspect: cooperative multi-UAV exploration and inspection (CARIC, SLEI3D)"};
+  app.set_version_flag("--version", coinspect::version());
+  app.require_subcommand(1);
+  coinspect::app::addScenarioCommand(app);
+  coinspect::app::addScoreCommand(app);
+  coinspect::app::addDemoCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error);
+  } catch (const coinspect::InputError& error) {
+    std::fprintf(stderr, "coinspect: error: %s\n", error.what());
+    return 2;
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "coinspect: failed: %s\n", error.what());
+    return 1;
+  }
+  return 0;
+}

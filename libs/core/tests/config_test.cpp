@@ -1,0 +1,77 @@
+#include "coinspect/core/config.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+
+#include "coinspect/core/error.h"
+
+namespace coinspect {
+
+namespace {
+std::string messageOf(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(Config, ReadsTypedValues) {
+  const auto config = Config::fromText(
+      "[mission]\nbudget = 600\nname = mbs\nrecord = yes\nstart = 1, 2.5, -3\n", "test.ini");
+  EXPECT_EQ(config.getDouble("mission", "budget"), 600.0);
+  EXPECT_EQ(config.getInt("mission", "budget"), 600);
+  EXPECT_EQ(config.getString("mission", "name"), "mbs");
+  EXPECT_TRUE(config.getBool("mission", "record"));
+  EXPECT_EQ(config.getVector3("mission", "start"), Eigen::Vector3d(1, 2.5, -3));
+  EXPECT_EQ(config.getDouble("mission", "absent", 4.0), 4.0);
+  EXPECT_NO_THROW(config.requireAllKeysUsed());
+}
+
+TEST(Config, MalformedValueNamesFileSectionKeyAndText) {
+  const auto config = Config::fromText("[mission]\nbudget = 6OO\n", "mission.ini");
+  const auto message = messageOf([&] { config.getDouble("mission", "budget"); });
+  EXPECT_NE(message.find("mission.ini"), std::string::npos) << message;
+  EXPECT_NE(message.find("[mission] budget"), std::string::npos) << message;
+  EXPECT_NE(message.find("6OO"), std::string::npos) << message;
+  // A present but malformed value is an error even when a fallback exists.
+  EXPECT_THROW(config.getDouble("mission", "budget", 1.0), InputError);
+}
+
+TEST(Config, MissingRequiredKeyAndNonFiniteNumbersAreErrors) {
+  const auto config = Config::fromText("[a]\nx = nan\n", "a.ini");
+  EXPECT_THROW(config.getDouble("a", "y"), InputError);
+  EXPECT_THROW(config.getDouble("a", "x"), InputError);
+  EXPECT_THROW(config.getVector3("a", "x"), InputError);
+}
+
+TEST(Config, UnknownKeysAreReported) {
+  const auto config = Config::fromText("[mission]\nbudget = 600\nbugdet = 700\n", "m.ini");
+  config.getDouble("mission", "budget");
+  const auto message = messageOf([&] { config.requireAllKeysUsed(); });
+  EXPECT_NE(message.find("[mission] bugdet"), std::string::npos) << message;
+}
+
+TEST(Config, LinesWithoutAssignmentAreRejectedWithTheirLineNumber) {
+  const auto message = messageOf([] { Config::fromText("[a]\nx = 1\nthis is wrong\n", "f.ini"); });
+  EXPECT_NE(message.find("f.ini: line 3"), std::string::npos) << message;
+}
+
+TEST(Config, OverridesReplaceAndAddValues) {
+  auto config = Config::fromText("[mission]\nbudget = 600\n", "m.ini");
+  config.applyOverride("mission.budget=120");
+  config.applyOverride("scenario.name = crane");
+  EXPECT_EQ(config.getDouble("mission", "budget"), 120.0);
+  EXPECT_EQ(config.getString("scenario", "name"), "crane");
+  EXPECT_THROW(config.applyOverride("budget=1"), InputError);
+  EXPECT_THROW(config.applyOverride("mission.budget"), InputError);
+}
+
+TEST(Config, MissingFileIsAnInputError) {
+  EXPECT_THROW(Config::fromFile("no/such/file.ini"), InputError);
+}
+
+}  // namespace coinspect
