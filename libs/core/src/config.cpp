@@ -40,8 +40,8 @@ Config Config::fromText(const std::string& text, const std::string& source) {
     if (content.empty() || content.front() == ';' || content.front() == '#') continue;
     if (content.front() == '[') {
       if (content.back() != ']' || content.size() < 3)
-        throw InputError(source, "line " + std::to_string(number), "malformed section header '" +
-                                                                      std::string(content) + "'");
+        throw InputError(source, "line " + std::to_string(number),
+                         "malformed section header '" + std::string(content) + "'");
       continue;
     }
     if (content.find('=') == std::string_view::npos)
@@ -187,10 +187,13 @@ void Config::requireAllKeysUsed(const std::vector<std::string>& sectionsToCheck)
   std::string unknown;
   for (const auto& section : sectionsToCheck.empty() ? sections() : sectionsToCheck)
     for (const auto& key : keys(section))
-      if (!used_.count({section, key})) unknown += (unknown.empty() ? "" : ", ") + ("[" + section + "] " + key);
+      if (!used_.count({section, key}))
+        unknown += (unknown.empty() ? "" : ", ") + ("[" + section + "] " + key);
   if (!unknown.empty()) throw InputError(source_, "", "unknown key(s): " + unknown);
 }
 
-std::string Config::toText() const { return impl_->ini.getContent(); }
+std::string Config::toText() const {
+  return impl_->ini.getContent();
+}
 
 }  // namespace coinspect

@@ -13,8 +13,7 @@ std::string compose(const std::string& source, const std::string& where, const s
 }
 }  // namespace
 
-InputError::InputError(const std::string& source, const std::string& where,
-                       const std::string& what)
+InputError::InputError(const std::string& source, const std::string& where, const std::string& what)
     : std::runtime_error(compose(source, where, what)), source_(source), where_(where) {}
 
 void failAssertion(const char* condition, const char* file, int line) {

@@ -9,8 +9,10 @@ namespace coinspect {
 
 std::string_view trim(std::string_view text) {
   const auto isSpace = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
-  while (!text.empty() && isSpace(text.front())) text.remove_prefix(1);
-  while (!text.empty() && isSpace(text.back())) text.remove_suffix(1);
+  while (!text.empty() && isSpace(text.front()))
+    text.remove_prefix(1);
+  while (!text.empty() && isSpace(text.back()))
+    text.remove_suffix(1);
   return text;
 }
 
@@ -19,7 +21,8 @@ std::vector<std::string> splitTokens(std::string_view text, std::string_view sep
   size_t start = 0;
   while (start <= text.size()) {
     const size_t end = text.find_first_of(separators, start);
-    const auto piece = trim(text.substr(start, end == std::string_view::npos ? text.npos : end - start));
+    const auto piece =
+        trim(text.substr(start, end == std::string_view::npos ? text.npos : end - start));
     if (!piece.empty()) tokens.emplace_back(piece);
     if (end == std::string_view::npos) break;
     start = end + 1;
@@ -51,7 +54,8 @@ std::optional<long long> parseInteger(std::string_view text) {
 
 std::string toLower(std::string_view text) {
   std::string lower(text);
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (char& c : lower)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return lower;
 }
 

@@ -19,7 +19,8 @@ TEST(Rng, KnownFirstValueOfTheStandardEngine) {
   // The C++ standard fixes mt19937_64's 10000th output for the default seed 5489.
   Rng rng(5489);
   uint64_t value = 0;
-  for (int i = 0; i < 10000; ++i) value = rng.next();
+  for (int i = 0; i < 10000; ++i)
+    value = rng.next();
   EXPECT_EQ(value, 9981545732273789042ULL);
 }
 

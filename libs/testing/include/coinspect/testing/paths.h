@@ -9,8 +9,12 @@
 
 namespace coinspect::testing {
 
-inline std::filesystem::path sourceDir() { return COINSPECT_SOURCE_DIR; }
-inline std::filesystem::path binaryDir() { return COINSPECT_BINARY_DIR; }
+inline std::filesystem::path sourceDir() {
+  return COINSPECT_SOURCE_DIR;
+}
+inline std::filesystem::path binaryDir() {
+  return COINSPECT_BINARY_DIR;
+}
 
 // The CARIC MBS scenario lives in ../shared (GPL-2.0 data, never copied into the repository).
 // COINSPECT_SHARED_DIR in the environment overrides the configured location.
@@ -20,7 +24,9 @@ inline std::filesystem::path caricMbsDir() {
   return shared / "data" / "caric-mbs";
 }
 
-inline bool haveCaricMbs() { return std::filesystem::exists(caricMbsDir() / "mbs.stl"); }
+inline bool haveCaricMbs() {
+  return std::filesystem::exists(caricMbsDir() / "mbs.stl");
+}
 
 // A fresh empty folder for one test's outputs, under the build tree.
 inline std::filesystem::path scratchDir(const std::string& name) {
@@ -33,8 +39,8 @@ inline std::filesystem::path scratchDir(const std::string& name) {
 }  // namespace coinspect::testing
 
 // Skips the current test cleanly when ../shared is absent (e.g. a checkout without it).
-#define COINSPECT_REQUIRE_CARIC_MBS()                                                  \
-  do {                                                                                 \
-    if (!::coinspect::testing::haveCaricMbs())                                         \
+#define COINSPECT_REQUIRE_CARIC_MBS()                                                        \
+  do {                                                                                       \
+    if (!::coinspect::testing::haveCaricMbs())                                               \
       GTEST_SKIP() << "CARIC MBS data not found at " << ::coinspect::testing::caricMbsDir(); \
   } while (0)

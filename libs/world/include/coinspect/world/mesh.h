@@ -18,7 +18,10 @@ struct Aabb {
   Vec3 min = Vec3::Constant(std::numeric_limits<double>::infinity());
   Vec3 max = Vec3::Constant(-std::numeric_limits<double>::infinity());
   bool empty() const { return (min.array() > max.array()).any(); }
-  void extend(const Vec3& p) { min = min.cwiseMin(p); max = max.cwiseMax(p); }
+  void extend(const Vec3& p) {
+    min = min.cwiseMin(p);
+    max = max.cwiseMax(p);
+  }
   Vec3 size() const { return max - min; }
 };
 
@@ -52,8 +55,10 @@ struct TriangleMesh {
 };
 
 // Rejects what would break ray casting or scoring: no triangles, non-finite vertices, indices
-// out of range, or only degenerate (zero-area) facets. Throws InputError naming `source` and the
-// first offending triangle or vertex.
+// out of range, only degenerate (zero-area) facets, at least half of the facets repeating another
+// one, or a non-manifold mesh (more than 10% of the edges shared by more than 2 facets; real
+// meshes have a few such edges). Throws InputError naming `source` and the first offending
+// triangle or vertex, or the counts.
 void validateMesh(const TriangleMesh& mesh, const std::string& source);
 
 }  // namespace coinspect::world

@@ -25,7 +25,10 @@ struct Scenario {
   size_t triangleCount() const;
   Aabb bounds() const;  // of the meshes
   // FNV-1a 64 over the geometry, boxes, points and fleet, in a fixed byte order: identifies the
-  // scenario in run headers (same content => same hash on every machine).
+  // scenario in run headers (same content => same hash on every machine). Meshes enter as
+  // triangle soups (independent of vertex indexing), every real number rounded to float32; the
+  // scenario name, description and mesh/box names are excluded (doc/config.md, "Content hash"),
+  // so loadScenario(saveScenario(s)) keeps the hash.
   uint64_t contentHash() const;
 };
 

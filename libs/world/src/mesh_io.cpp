@@ -1,0 +1,189 @@
+#include "coinspect/world/mesh_io.h"
+
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <assimp/Importer.hpp>
+
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <system_error>
+#include <unordered_map>
+
+#include "coinspect/core/error.h"
+
+namespace coinspect::world {
+namespace {
+
+Eigen::Matrix4d toEigen(const aiMatrix4x4& m) {
+  Eigen::Matrix4d out;
+  out << m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4, m.c1, m.c2, m.c3, m.c4, m.d1, m.d2, m.d3,
+      m.d4;
+  return out;
+}
+
+// Key for welding vertices by exact position. Assimp's JoinIdenticalVertices also compares
+// normals and texture coordinates, so an STL (one normal per facet) would keep three private
+// vertices per triangle; welding by position restores the shared edges that validateMesh checks.
+struct PositionHash {
+  size_t operator()(const Eigen::Vector3f& p) const {
+    uint32_t bits[3];
+    std::memcpy(bits, p.data(), sizeof bits);
+    uint64_t h = 1469598103934665603ull;
+    for (const uint32_t b : bits)
+      h = (h ^ b) * 1099511628211ull;
+    return static_cast<size_t>(h);
+  }
+};
+struct PositionEqual {
+  // Bitwise so that -0 and +0 stay apart like any other distinct bit pattern; both are rare and
+  // keeping them separate only costs a vertex.
+  bool operator()(const Eigen::Vector3f& a, const Eigen::Vector3f& b) const {
+    return std::memcmp(a.data(), b.data(), sizeof(float) * 3) == 0;
+  }
+};
+
+struct Flattener {
+  const aiScene& scene;
+  TriangleMesh& out;
+  std::unordered_map<Eigen::Vector3f, uint32_t, PositionHash, PositionEqual> index;
+  std::vector<uint32_t> remap;
+
+  uint32_t weld(const Eigen::Vector3f& p) {
+    const auto [it, inserted] = index.emplace(p, static_cast<uint32_t>(out.vertices.size()));
+    if (inserted) out.vertices.push_back(p);
+    return it->second;
+  }
+
+  void visit(const aiNode& node, const Eigen::Matrix4d& parent) {
+    const Eigen::Matrix4d world = parent * toEigen(node.mTransformation);
+    const Eigen::Matrix3d linear = world.topLeftCorner<3, 3>();
+    const Eigen::Vector3d offset = world.topRightCorner<3, 1>();
+    // A mirroring node transform turns counter-clockwise facets clockwise: swap two vertices so
+    // that normals keep pointing outwards.
+    const bool mirrored = linear.determinant() < 0.0;
+    for (unsigned m = 0; m < node.mNumMeshes; ++m) {
+      const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
+      remap.assign(mesh.mNumVertices, 0);
+      for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+        const aiVector3D& p = mesh.mVertices[v];
+        const Eigen::Vector3d x = linear * Eigen::Vector3d(p.x, p.y, p.z) + offset;
+        remap[v] = weld(x.cast<float>());
+      }
+      for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+        const aiFace& face = mesh.mFaces[f];
+        // Points and lines survive triangulation; they are not surfaces.
+        if (face.mNumIndices != 3) continue;
+        std::array<uint32_t, 3> t{remap[face.mIndices[0]], remap[face.mIndices[1]],
+                                  remap[face.mIndices[2]]};
+        if (mirrored) std::swap(t[1], t[2]);
+        out.triangles.push_back(t);
+      }
+    }
+    for (unsigned c = 0; c < node.mNumChildren; ++c)
+      visit(*node.mChildren[c], world);
+  }
+};
+
+// Binary files are little endian whatever the host: write each value byte by byte.
+void putU32(std::string& buffer, uint32_t value) {
+  for (int i = 0; i < 4; ++i)
+    buffer.push_back(static_cast<char>((value >> (8 * i)) & 0xffu));
+}
+void putF32(std::string& buffer, float value) {
+  uint32_t bits;
+  std::memcpy(&bits, &value, sizeof bits);
+  putU32(buffer, bits);
+}
+
+void writeFile(const std::string& bytes, const std::filesystem::path& path) {
+  std::ofstream file(path, std::ios::binary | std::ios::trunc);
+  if (!file) throw InputError(path.string(), "", "cannot open the file for writing");
+  file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  file.close();
+  if (!file) throw InputError(path.string(), "", "writing the file failed");
+}
+
+}  // namespace
+
+TriangleMesh loadMesh(const std::filesystem::path& path, const MeshTransform& transform) {
+  const std::string source = path.string();
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error))
+    throw InputError(source, "", "no such mesh file");
+
+  Assimp::Importer importer;
+  // Return Collada Z_UP files in their authored frame: Assimp would otherwise rotate them to
+  // Y-up, but every coinspect frame is Z-up.
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+  const aiScene* scene =
+      importer.ReadFile(source, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+  if (scene == nullptr || scene->mRootNode == nullptr) {
+    const std::string reason = importer.GetErrorString();
+    throw InputError(source, "",
+                     "cannot read the mesh" + (reason.empty() ? std::string() : ": " + reason));
+  }
+
+  TriangleMesh mesh;
+  mesh.name = path.stem().string();
+  Flattener flattener{*scene, mesh, {}, {}};
+  flattener.visit(*scene->mRootNode, Eigen::Matrix4d::Identity());
+  if (mesh.triangles.empty()) throw InputError(source, "", "the file holds no triangles");
+
+  mesh.transform(transform);
+  validateMesh(mesh, source);
+  return mesh;
+}
+
+void writeStl(const TriangleMesh& mesh, const std::filesystem::path& path) {
+  std::string bytes;
+  bytes.reserve(84 + 50 * mesh.triangles.size());
+  std::string header = "binary STL written by coinspect: " + mesh.name;
+  header.resize(80, ' ');
+  // A header starting with "solid" makes some readers take the file for ASCII STL.
+  if (header.compare(0, 5, "solid") == 0) header[0] = 'S';
+  bytes += header;
+  putU32(bytes, static_cast<uint32_t>(mesh.triangles.size()));
+  for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const Eigen::Vector3f normal = mesh.facetNormal(i).cast<float>();
+    for (int k = 0; k < 3; ++k)
+      putF32(bytes, normal[k]);
+    for (const uint32_t v : mesh.triangles[i])
+      for (int k = 0; k < 3; ++k)
+        putF32(bytes, mesh.vertices[v][k]);
+    bytes.push_back('\0');  // attribute byte count
+    bytes.push_back('\0');
+  }
+  writeFile(bytes, path);
+}
+
+void writePly(const TriangleMesh& mesh, const std::filesystem::path& path) {
+  std::string bytes =
+      "ply\n"
+      "format binary_little_endian 1.0\n"
+      "comment written by coinspect\n"
+      "element vertex " +
+      std::to_string(mesh.vertices.size()) +
+      "\n"
+      "property float x\n"
+      "property float y\n"
+      "property float z\n"
+      "element face " +
+      std::to_string(mesh.triangles.size()) +
+      "\n"
+      "property list uchar int vertex_indices\n"
+      "end_header\n";
+  bytes.reserve(bytes.size() + 12 * mesh.vertices.size() + 13 * mesh.triangles.size());
+  for (const auto& v : mesh.vertices)
+    for (int k = 0; k < 3; ++k)
+      putF32(bytes, v[k]);
+  for (const auto& t : mesh.triangles) {
+    bytes.push_back(3);
+    for (const uint32_t v : t)
+      putU32(bytes, v);
+  }
+  writeFile(bytes, path);
+}
+
+}  // namespace coinspect::world
