@@ -122,8 +122,12 @@ void runDemo(const DemoOptions& options) {
 
   eval::SceneOverlay overlay;
   overlay.boxes = scenario.boxes;
+  // Dense point sets (tens of thousands on the tall CARIC-like scenes) need smaller markers to
+  // leave the structure visible.
+  const double markerRadius = points.size() > 5000 ? 1.3 : 2.2;
   for (const auto& point : points.points())
-    overlay.points.push_back({point.position, eval::scoreColor(tally.value(point.index)), 2.2});
+    overlay.points.push_back(
+        {point.position, eval::scoreColor(tally.value(point.index)), markerRadius});
   const auto camera = eval::ViewCamera::overview(bounds, options.width, options.height);
   std::filesystem::create_directories(options.out);
   const auto picture = std::filesystem::path(options.out) / "demo.png";

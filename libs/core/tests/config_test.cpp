@@ -2,21 +2,13 @@
 
 #include <gtest/gtest.h>
 
-#include <functional>
-
 #include "coinspect/core/error.h"
+#include "coinspect/testing/input_errors.h"
 
 namespace coinspect {
 
 namespace {
-std::string messageOf(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
-}
+using coinspect::testing::messageOf;
 }  // namespace
 
 TEST(Config, ReadsTypedValues) {

@@ -5,24 +5,20 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <optional>
 #include <set>
 #include <sstream>
 
 #include "coinspect/core/error.h"
 #include "coinspect/core/text.h"
+#include "file_utils.h"
 
 namespace coinspect::world {
 namespace {
 
-std::string readWholeFile(const std::filesystem::path& path, const char* what) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "", std::string("cannot open ") + what);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using detail::putF32;
+using detail::putU32;
+using detail::readWholeFile;
 
 std::string lineName(int line) {
   return "line " + std::to_string(line);
@@ -51,17 +47,6 @@ float getF32(const std::string& bytes, size_t at) {
   float value;
   std::memcpy(&value, &bits, sizeof value);
   return value;
-}
-
-void putU32(std::string& buffer, uint32_t value) {
-  for (int i = 0; i < 4; ++i)
-    buffer.push_back(static_cast<char>((value >> (8 * i)) & 0xffu));
-}
-
-void putF32(std::string& buffer, float value) {
-  uint32_t bits;
-  std::memcpy(&bits, &value, sizeof bits);
-  putU32(buffer, bits);
 }
 
 }  // namespace
@@ -241,11 +226,7 @@ void writeCaricInterestPoints(const std::vector<InterestPoint>& points,
       putF32(bytes, static_cast<float>(p.position[k]));
     putU32(bytes, 0);
   }
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw InputError(path.string(), "", "cannot open the file for writing");
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  out.close();
-  if (!out) throw InputError(path.string(), "", "writing the file failed");
+  detail::writeWholeFile(path, bytes);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -6,15 +6,18 @@
 #include <assimp/Importer.hpp>
 
 #include <cstring>
-#include <fstream>
 #include <string>
 #include <system_error>
 #include <unordered_map>
 
 #include "coinspect/core/error.h"
+#include "file_utils.h"
 
 namespace coinspect::world {
 namespace {
+
+using detail::putF32;
+using detail::putU32;
 
 Eigen::Matrix4d toEigen(const aiMatrix4x4& m) {
   Eigen::Matrix4d out;
@@ -86,25 +89,6 @@ struct Flattener {
   }
 };
 
-// Binary files are little endian whatever the host: write each value byte by byte.
-void putU32(std::string& buffer, uint32_t value) {
-  for (int i = 0; i < 4; ++i)
-    buffer.push_back(static_cast<char>((value >> (8 * i)) & 0xffu));
-}
-void putF32(std::string& buffer, float value) {
-  uint32_t bits;
-  std::memcpy(&bits, &value, sizeof bits);
-  putU32(buffer, bits);
-}
-
-void writeFile(const std::string& bytes, const std::filesystem::path& path) {
-  std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  if (!file) throw InputError(path.string(), "", "cannot open the file for writing");
-  file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  file.close();
-  if (!file) throw InputError(path.string(), "", "writing the file failed");
-}
-
 }  // namespace
 
 TriangleMesh loadMesh(const std::filesystem::path& path, const MeshTransform& transform) {
@@ -155,7 +139,7 @@ void writeStl(const TriangleMesh& mesh, const std::filesystem::path& path) {
     bytes.push_back('\0');  // attribute byte count
     bytes.push_back('\0');
   }
-  writeFile(bytes, path);
+  detail::writeWholeFile(path, bytes);
 }
 
 void writePly(const TriangleMesh& mesh, const std::filesystem::path& path) {
@@ -183,7 +167,7 @@ void writePly(const TriangleMesh& mesh, const std::filesystem::path& path) {
     for (const uint32_t v : t)
       putU32(bytes, v);
   }
-  writeFile(bytes, path);
+  detail::writeWholeFile(path, bytes);
 }
 
 }  // namespace coinspect::world

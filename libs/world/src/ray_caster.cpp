@@ -78,6 +78,40 @@ void initRay(RTCRay& ray, const Eigen::Vector3f& origin, const Eigen::Vector3f& 
   ray.flags = 0;
 }
 
+// initRay for lane k of a packet (its id is the lane).
+inline void initLane(RTCRay16& packet, size_t k, const Eigen::Vector3f& origin,
+                     const Eigen::Vector3f& direction, float tfar) {
+  packet.org_x[k] = origin.x();
+  packet.org_y[k] = origin.y();
+  packet.org_z[k] = origin.z();
+  packet.dir_x[k] = direction.x();
+  packet.dir_y[k] = direction.y();
+  packet.dir_z[k] = direction.z();
+  packet.tnear[k] = 0.0f;
+  packet.tfar[k] = tfar;
+  packet.time[k] = 0.0f;
+  packet.mask[k] = 0xffffffffu;
+  packet.id[k] = static_cast<unsigned>(k);
+  packet.flags[k] = 0;
+}
+
+// Runs n queries through Embree kPacket at a time, without allocating. setUp(i, packet, k) fills
+// lane k for query i and returns false when that query needs no ray; trace(valid, packet) calls
+// Embree; collect(i, packet, k) then reads the result of each lane that was traced.
+template <class Packet, class SetUp, class Trace, class Collect>
+inline void tracePackets(size_t n, const SetUp& setUp, const Trace& trace, const Collect& collect) {
+  alignas(64) Packet packet;
+  alignas(64) int valid[kPacket];
+  for (size_t start = 0; start < n; start += kPacket) {
+    const size_t count = std::min(kPacket, n - start);
+    for (size_t k = 0; k < kPacket; ++k)
+      valid[k] = k < count && setUp(start + k, packet, k) ? -1 : 0;
+    trace(valid, packet);
+    for (size_t k = 0; k < count; ++k)
+      if (valid[k] != 0) collect(start + k, packet, k);
+  }
+}
+
 }  // namespace
 
 struct RayCaster::Impl {
@@ -279,38 +313,23 @@ void RayCaster::closestHits(const std::vector<Vec3>& origins, const std::vector<
   const float tfar = static_cast<float>(maxRange);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  alignas(64) RTCRayHit16 packet;
-  alignas(64) int valid[kPacket];
-  for (size_t start = 0; start < n; start += kPacket) {
-    const size_t count = std::min(kPacket, n - start);
-    for (size_t k = 0; k < kPacket; ++k) {
-      valid[k] = 0;
-      if (k >= count) continue;
-      const Vec3& d = directions[start + k];
-      const double norm = d.norm();
-      if (!(norm > 0.0)) continue;
-      const Vec3& o = origins[start + k];
-      valid[k] = -1;
-      packet.ray.org_x[k] = static_cast<float>(o.x());
-      packet.ray.org_y[k] = static_cast<float>(o.y());
-      packet.ray.org_z[k] = static_cast<float>(o.z());
-      packet.ray.dir_x[k] = static_cast<float>(d.x() / norm);
-      packet.ray.dir_y[k] = static_cast<float>(d.y() / norm);
-      packet.ray.dir_z[k] = static_cast<float>(d.z() / norm);
-      packet.ray.tnear[k] = 0.0f;
-      packet.ray.tfar[k] = tfar;
-      packet.ray.time[k] = 0.0f;
-      packet.ray.mask[k] = 0xffffffffu;
-      packet.ray.id[k] = static_cast<unsigned>(k);
-      packet.ray.flags[k] = 0;
-      packet.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
-      packet.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
-    }
-    rtcIntersect16(valid, impl_->scene, &context, &packet);
-    for (size_t k = 0; k < count; ++k)
-      if (valid[k] != 0 && packet.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID)
-        distances[start + k] = packet.ray.tfar[k];
-  }
+  tracePackets<RTCRayHit16>(
+      n,
+      [&](size_t i, RTCRayHit16& packet, size_t k) {
+        const Vec3& d = directions[i];
+        const double norm = d.norm();
+        if (!(norm > 0.0)) return false;
+        initLane(packet.ray, k, origins[i].cast<float>(), (d / norm).cast<float>(), tfar);
+        packet.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+        packet.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+        return true;
+      },
+      [&](const int* valid, RTCRayHit16& packet) {
+        rtcIntersect16(valid, impl_->scene, &context, &packet);
+      },
+      [&](size_t i, const RTCRayHit16& packet, size_t k) {
+        if (packet.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID) distances[i] = packet.ray.tfar[k];
+      });
 }
 
 void RayCaster::segmentsClear(const std::vector<Vec3>& from, const std::vector<Vec3>& to,
@@ -320,37 +339,24 @@ void RayCaster::segmentsClear(const std::vector<Vec3>& from, const std::vector<V
   clear.assign(n, 1);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  alignas(64) RTCRay16 packet;
-  alignas(64) int valid[kPacket];
-  for (size_t start = 0; start < n; start += kPacket) {
-    const size_t count = std::min(kPacket, n - start);
-    for (size_t k = 0; k < kPacket; ++k) {
-      valid[k] = 0;
-      if (k >= count) continue;
-      const Vec3& a = from[start + k];
-      const Vec3 delta = to[start + k] - a;
-      const double length = delta.norm();
-      const float reach = justBelow(length - tolerance);
-      if (!(reach > 0.0f)) continue;
-      const double inverse = 1.0 / length;
-      valid[k] = -1;
-      packet.org_x[k] = static_cast<float>(a.x());
-      packet.org_y[k] = static_cast<float>(a.y());
-      packet.org_z[k] = static_cast<float>(a.z());
-      packet.dir_x[k] = static_cast<float>(delta.x() * inverse);
-      packet.dir_y[k] = static_cast<float>(delta.y() * inverse);
-      packet.dir_z[k] = static_cast<float>(delta.z() * inverse);
-      packet.tnear[k] = 0.0f;
-      packet.tfar[k] = reach;
-      packet.time[k] = 0.0f;
-      packet.mask[k] = 0xffffffffu;
-      packet.id[k] = static_cast<unsigned>(k);
-      packet.flags[k] = 0;
-    }
-    rtcOccluded16(valid, impl_->scene, &context, &packet);
-    for (size_t k = 0; k < count; ++k)
-      if (valid[k] != 0 && !(packet.tfar[k] >= 0.0f)) clear[start + k] = 0;
-  }
+  tracePackets<RTCRay16>(
+      n,
+      [&](size_t i, RTCRay16& packet, size_t k) {
+        const Vec3& a = from[i];
+        const Vec3 delta = to[i] - a;
+        const double length = delta.norm();
+        const float reach = justBelow(length - tolerance);
+        if (!(reach > 0.0f)) return false;
+        const double inverse = 1.0 / length;
+        initLane(packet, k, a.cast<float>(), (delta * inverse).cast<float>(), reach);
+        return true;
+      },
+      [&](const int* valid, RTCRay16& packet) {
+        rtcOccluded16(valid, impl_->scene, &context, &packet);
+      },
+      [&](size_t i, const RTCRay16& packet, size_t k) {
+        if (!(packet.tfar[k] >= 0.0f)) clear[i] = 0;
+      });
 }
 
 double RayCaster::distanceToSurface(const Vec3& p, double maxDistance) const {

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -13,6 +12,7 @@
 #include "coinspect/core/text.h"
 #include "coinspect/world/caric_formats.h"
 #include "coinspect/world/mesh_io.h"
+#include "file_utils.h"
 
 namespace coinspect::world {
 namespace {
@@ -182,11 +182,7 @@ UnitSpec readUnitSection(const Config& config, const std::string& section) {
 
 Scenario loadScenario(const fs::path& iniPath) {
   const std::string source = iniPath.string();
-  std::ifstream in(iniPath, std::ios::binary);
-  if (!in) throw InputError(source, "", "cannot open scenario file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  const std::string text = detail::readWholeFile(iniPath, "scenario file");
   const fs::path folder = iniPath.parent_path();
 
   // The INI reader first: it rejects malformed lines before the section scan looks at them.
@@ -251,14 +247,6 @@ std::string fileSafe(const std::string& name) {
   for (const char c : name)
     out.push_back(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_');
   return out;
-}
-
-void writeText(const std::string& text, const fs::path& path) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw InputError(path.string(), "", "cannot open the file for writing");
-  out << text;
-  out.close();
-  if (!out) throw InputError(path.string(), "", "writing the file failed");
 }
 
 }  // namespace
@@ -344,7 +332,7 @@ void saveScenario(const Scenario& scenario, const fs::path& folder) {
     ini << "gimbal_yaw_max = " << formatDegrees(c.gimbalYawMax) << "\n";
     ini << "gimbal_rate_max = " << formatDegrees(c.gimbalRateMax) << "\n";
   }
-  writeText(ini.str(), folder / "scenario.ini");
+  detail::writeWholeFile(folder / "scenario.ini", ini.str());
 }
 
 void exportInterestPointsCsv(const InterestPointSet& points, const fs::path& path) {
@@ -358,7 +346,7 @@ void exportInterestPointsCsv(const InterestPointSet& points, const fs::path& pat
       csv << formatReal(p.normal[k] + 0.0) << ",";
     csv << p.index << "\n";
   }
-  writeText(csv.str(), path);
+  detail::writeWholeFile(path, csv.str());
 }
 
 }  // namespace coinspect::world

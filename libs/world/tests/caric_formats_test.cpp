@@ -4,9 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 
 #include "coinspect/core/error.h"
+#include "coinspect/testing/files.h"
+#include "coinspect/testing/input_errors.h"
 #include "coinspect/testing/paths.h"
 
 namespace coinspect::world {
@@ -14,34 +15,12 @@ namespace {
 
 namespace fs = std::filesystem;
 using coinspect::testing::caricMbsDir;
+using coinspect::testing::messageOf;
+using coinspect::testing::readFile;
 using coinspect::testing::scratchDir;
+using coinspect::testing::writeFile;
 
 constexpr double kDeg = M_PI / 180.0;
-
-void writeFile(const fs::path& path, const std::string& bytes) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-template <class F>
-std::string messageOf(F&& f) {
-  try {
-    f();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return "";
-}
-
-#define EXPECT_MENTIONS(message, text)               \
-  EXPECT_NE((message).find(text), std::string::npos) \
-      << "'" << (message) << "' lacks '" << (text) << "'"
 
 // ----------------------------------------------------------------------------- real MBS data
 

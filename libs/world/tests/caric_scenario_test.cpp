@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "coinspect/core/error.h"
+#include "coinspect/testing/input_errors.h"
 #include "coinspect/testing/paths.h"
 
 namespace coinspect::world {
@@ -12,22 +13,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using coinspect::testing::caricMbsDir;
+using coinspect::testing::messageOf;
 using coinspect::testing::scratchDir;
-
-template <class F>
-std::string messageOf(F&& f) {
-  try {
-    f();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return "";
-}
-
-#define EXPECT_MENTIONS(message, text)               \
-  EXPECT_NE((message).find(text), std::string::npos) \
-      << "'" << (message) << "' lacks '" << (text) << "'"
 
 // A scratch copy of the MBS folder made of symbolic links (the data is never copied), minus
 // the files named in `skip`.

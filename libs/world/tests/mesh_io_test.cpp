@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "coinspect/core/error.h"
+#include "coinspect/testing/files.h"
 #include "coinspect/testing/paths.h"
 #include "test_meshes.h"
 
@@ -17,6 +17,7 @@ namespace coinspect::world {
 namespace {
 
 namespace fs = std::filesystem;
+using coinspect::testing::writeFile;
 
 using Facet = std::array<std::array<float, 3>, 3>;
 
@@ -34,10 +35,6 @@ std::vector<Facet> canonicalFacets(const TriangleMesh& mesh) {
   }
   std::sort(facets.begin(), facets.end());
   return facets;
-}
-
-void writeText(const fs::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
 }
 
 // The message of the InputError thrown by loadMesh(path), or "" if none.
@@ -122,7 +119,7 @@ facet normal 0.577 0.577 0.577
 endfacet
 endsolid tetra
 )";
-  writeText(dir / "tetra.stl", text);
+  writeFile(dir / "tetra.stl", text);
   const TriangleMesh mesh = loadMesh(dir / "tetra.stl");
   ASSERT_EQ(mesh.triangleCount(), 4u);
   EXPECT_EQ(mesh.vertices.size(), 4u);
@@ -142,7 +139,7 @@ endsolid tetra
 TEST(MeshIo, ReadsObjWithQuadsTriangulated) {
   const fs::path dir = testing::scratchDir("mesh_io_obj");
   // Square pyramid: a quad base (split in 2 triangles) and 4 sides, apex at z = 2.
-  writeText(dir / "pyramid.obj",
+  writeFile(dir / "pyramid.obj",
             "# pyramid\n"
             "v 0 0 0\nv 2 0 0\nv 2 2 0\nv 0 2 0\nv 1 1 2\n"
             "f 1 4 3 2\n"
@@ -161,7 +158,7 @@ TEST(MeshIo, ColladaZUpStaysZUpAndNodeTransformsAreFlattened) {
   const fs::path dir = testing::scratchDir("mesh_io_dae");
   // One triangle standing in the x-z plane (tip at z = 1), instanced under a node translated by
   // (10, 20, 30). Z_UP: the returned frame is the authored one, so the tip stays at z = 31.
-  writeText(dir / "tri.dae", R"(<?xml version="1.0" encoding="utf-8"?>
+  writeFile(dir / "tri.dae", R"(<?xml version="1.0" encoding="utf-8"?>
 <COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
   <asset><unit name="meter" meter="1"/><up_axis>Z_UP</up_axis></asset>
   <library_geometries>
@@ -210,10 +207,10 @@ TEST(MeshIo, MissingFileNamesIt) {
 
 TEST(MeshIo, EmptyAndGarbageFilesNameThemselves) {
   const fs::path dir = testing::scratchDir("mesh_io_garbage");
-  writeText(dir / "empty.stl", "");
-  writeText(dir / "garbage.stl", "this is not a mesh at all, just a line of text\n");
-  writeText(dir / "points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
-  writeText(dir / "flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
+  writeFile(dir / "empty.stl", "");
+  writeFile(dir / "garbage.stl", "this is not a mesh at all, just a line of text\n");
+  writeFile(dir / "points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+  writeFile(dir / "flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
   for (const char* name : {"empty.stl", "garbage.stl", "points.obj", "flat.obj"}) {
     const std::string message = loadError(dir / name);
     EXPECT_NE(message.find(name), std::string::npos) << name << ": '" << message << "'";

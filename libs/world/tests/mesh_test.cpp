@@ -161,22 +161,52 @@ TEST(ValidateMesh, RejectsDuplicatedFacets) {
   EXPECT_NE(rejection(rotated, "rotated.stl").find("repeat"), std::string::npos);
 }
 
-TEST(ValidateMesh, RejectsNonManifoldFan) {
-  // Four distinct facets around the edge 0-1: 1 of its 9 edges (11%) is shared by more than 2
-  // facets, over the 10% limit.
-  TriangleMesh fan;
-  fan.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  fan.triangles = {{0, 1, 2}, {0, 1, 3}, {0, 1, 4}, {0, 1, 5}};
-  const std::string message = rejection(fan, "fan.stl");
-  EXPECT_NE(message.find("fan.stl"), std::string::npos) << message;
+TEST(ValidateMesh, RejectsMeshStackedOnItself) {
+  // A box stored three times (twice as given, once with reversed facets): 12 of 36 facets repeat
+  // another (under the 50% duplicate limit), but all 18 edges are shared by 6 facets.
+  const TriangleMesh box = test::boxMesh(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  TriangleMesh stacked = box;
+  stacked.append(box);
+  TriangleMesh reversed = box;
+  for (auto& t : reversed.triangles)
+    std::swap(t[1], t[2]);
+  stacked.append(reversed);
+  const std::string message = rejection(stacked, "stacked.stl");
+  EXPECT_NE(message.find("stacked.stl"), std::string::npos) << message;
   EXPECT_NE(message.find("non-manifold"), std::string::npos) << message;
-  EXPECT_NE(message.find("1 of 9 edges"), std::string::npos) << message;
+  EXPECT_NE(message.find("18 of 18 edges"), std::string::npos) << message;
+}
 
+TEST(ValidateMesh, EdgesAreComparedByPositionNotIndex) {
+  // The same stacked box with every facet on vertices of its own (as an STL file stores it) is
+  // judged the same way.
+  const TriangleMesh box = test::boxMesh(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  TriangleMesh soup;
+  for (int copy = 0; copy < 3; ++copy)
+    for (const auto& t : box.triangles) {
+      const auto base = static_cast<uint32_t>(soup.vertices.size());
+      for (const uint32_t i : t)
+        soup.vertices.push_back(box.vertices[i]);
+      // The third copy reversed, as in RejectsMeshStackedOnItself.
+      if (copy == 2)
+        soup.triangles.push_back({base, base + 2, base + 1});
+      else
+        soup.triangles.push_back({base, base + 1, base + 2});
+    }
+  EXPECT_NE(rejection(soup, "soup.stl").find("18 of 18 edges"), std::string::npos);
+}
+
+TEST(ValidateMesh, AcceptsFinsAndPartsTouchingAlongAnEdge) {
   // A box (18 edges) with one fin on an edge: 1 of 20 edges (5%) is shared by 3 facets.
   TriangleMesh finned = test::boxMesh(Vec3(0, 0, 0), Vec3(1, 1, 1));
   finned.vertices.emplace_back(-1.0f, -1.0f, 0.0f);
   finned.triangles.push_back({0, 1, 8});
   EXPECT_EQ(rejection(finned, "finned.stl"), "");
+  // Two closed boxes touching along one vertical edge (walls of a generated hangar): at most a
+  // few of their 35 distinct edges are shared by 4 facets.
+  TriangleMesh touching = test::boxMesh(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  touching.append(test::boxMesh(Vec3(1, 1, 0), Vec3(2, 2, 1)));
+  EXPECT_EQ(rejection(touching, "touching.stl"), "");
 }
 
 }  // namespace

@@ -6,9 +6,12 @@
 #include <limits>
 
 #include "coinspect/core/error.h"
+#include "coinspect/testing/input_errors.h"
 
 namespace coinspect::world {
 namespace {
+
+using coinspect::testing::messageOf;
 
 Eigen::Matrix3d rotZ(double degrees) {
   return Eigen::AngleAxisd(degrees * M_PI / 180.0, Vec3::UnitZ()).toRotationMatrix();
@@ -21,16 +24,6 @@ OrientedBox rotatedBox() {
   box.size = Vec3(4, 2, 1);
   box.rotation = rotZ(30);
   return box;
-}
-
-template <class F>
-std::string messageOf(F&& f) {
-  try {
-    f();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
 }
 
 TEST(OrientedBox, ContainsPointsOfARotatedBox) {

@@ -4,10 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "coinspect/core/error.h"
+#include "coinspect/testing/files.h"
+#include "coinspect/testing/input_errors.h"
 #include "coinspect/testing/paths.h"
 #include "coinspect/world/caric_formats.h"
 #include "coinspect/world/caric_scenario.h"
@@ -18,32 +19,10 @@ namespace {
 
 namespace fs = std::filesystem;
 using coinspect::testing::caricMbsDir;
+using coinspect::testing::messageOf;
+using coinspect::testing::readFile;
 using coinspect::testing::scratchDir;
-
-template <class F>
-std::string messageOf(F&& f) {
-  try {
-    f();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return "";
-}
-
-#define EXPECT_MENTIONS(message, text)               \
-  EXPECT_NE((message).find(text), std::string::npos) \
-      << "'" << (message) << "' lacks '" << (text) << "'"
-
-void writeFile(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-}
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using coinspect::testing::writeFile;
 
 TriangleMesh cube() {
   TriangleMesh mesh;
