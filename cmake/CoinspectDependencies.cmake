@@ -16,3 +16,7 @@ endif()
 if(COINSPECT_BUILD_BENCH)
   find_package(benchmark REQUIRED)
 endif()
+# Fleet simulation: multirotor dynamics (CVODE) and MRPT observations for LiDAR sweeps.
+find_package(SUNDIALS REQUIRED)
+find_package(mrpt-obs REQUIRED)
+find_package(mrpt-maps REQUIRED)
