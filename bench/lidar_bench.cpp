@@ -1,0 +1,210 @@
+// Full LiDAR sweeps on the CARIC MBS mesh: LidarSimulator::sweep against a bare Embree loop.
+//
+// One iteration = one VLP-16 sweep (16 x 440 = 7,040 rays, 0.9-50 m) from each of 8 poses on a
+// ring around the structure, the head tilted as the CARIC servo would at 8 instants. The bare
+// loop builds its own robust scene from the same triangles and ground and traces the same world
+// rays (precomputed in float) with rtcIntersect16, keeping the ranges inside the band; the
+// simulator also rotates its rays, applies the band and writes sensor-frame points.
+#include <benchmark/benchmark.h>
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "coinspect/sensing/lidar.h"
+#include "coinspect/world/mesh_io.h"
+#include "coinspect/world/ray_caster.h"
+
+namespace {
+
+using coinspect::sensing::LidarScan;
+using coinspect::sensing::LidarSimulator;
+using coinspect::sensing::LidarSpec;
+using coinspect::world::RayCaster;
+using coinspect::world::TriangleMesh;
+using coinspect::world::Vec3;
+
+constexpr int kPoses = 8;
+constexpr double kGroundHalfExtent = 5000.0;
+
+struct BareScene {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+  explicit BareScene(const TriangleMesh& mesh) {
+    device = rtcNewDevice(nullptr);
+    scene = rtcNewScene(device);
+    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);  // as RayCaster
+    add(mesh.vertices, mesh.triangles);
+    const auto box = mesh.bounds();
+    const Vec3 c = 0.5 * (box.min + box.max);
+    const float h = static_cast<float>(kGroundHalfExtent);
+    const float cx = static_cast<float>(c.x()), cy = static_cast<float>(c.y());
+    add({{cx - h, cy - h, 0}, {cx + h, cy - h, 0}, {cx + h, cy + h, 0}, {cx - h, cy + h, 0}},
+        {{0, 1, 2}, {0, 2, 3}});
+    rtcCommitScene(scene);
+  }
+  ~BareScene() {
+    rtcReleaseScene(scene);
+    rtcReleaseDevice(device);
+  }
+  BareScene(const BareScene&) = delete;
+  BareScene& operator=(const BareScene&) = delete;
+
+  void add(const std::vector<Eigen::Vector3f>& vertices,
+           const std::vector<std::array<uint32_t, 3>>& triangles) {
+    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices.size()));
+    auto* t = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), triangles.size()));
+    std::memcpy(v, vertices.data(), vertices.size() * 3 * sizeof(float));
+    std::memcpy(t, triangles.data(), triangles.size() * 3 * sizeof(uint32_t));
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(scene, g);
+    rtcReleaseGeometry(g);
+  }
+};
+
+LidarSpec caricVlp16() {
+  LidarSpec spec;  // the defaults are the reference VLP-16
+  spec.tiltAmplitude = M_PI / 2.0;
+  spec.tiltPeriod = 8.0;
+  spec.mountOffset = Eigen::Vector3d(0.0, 0.0, 0.2);
+  return spec;
+}
+
+struct Setup {
+  bool ok = false;
+  LidarSpec spec = caricVlp16();
+  std::unique_ptr<RayCaster> caster;
+  std::unique_ptr<BareScene> bare;
+  std::vector<Eigen::Isometry3d> sensorPoses;
+  std::vector<float> o, d;  // world rays of every pose, 3 floats each, for the bare loop
+
+  Setup() {
+    const auto path = std::filesystem::path(COINSPECT_SHARED_DIR) / "data/caric-mbs/mbs.stl";
+    if (!std::filesystem::exists(path)) return;
+    const TriangleMesh mesh = coinspect::world::loadMesh(path);
+    caster = std::make_unique<RayCaster>(std::vector<TriangleMesh>{mesh}, 0.0, kGroundHalfExtent);
+    bare = std::make_unique<BareScene>(mesh);
+    const auto box = mesh.bounds();
+    const Vec3 centre = 0.5 * (box.min + box.max);
+    const Vec3 half = 0.5 * box.size();
+    const LidarSimulator directions(spec, 0);
+    for (int view = 0; view < kPoses; ++view) {
+      const double a = 2.0 * M_PI * view / kPoses;
+      Eigen::Isometry3d body = Eigen::Isometry3d::Identity();
+      body.translation() = Vec3(centre.x() + (half.x() + 15.0) * std::cos(a),
+                                centre.y() + (half.y() + 15.0) * std::sin(a), 10.0 + 6.0 * view);
+      // Facing the structure, the servo at 8 different phases.
+      body.linear() = Eigen::AngleAxisd(a + M_PI, Vec3::UnitZ()).toRotationMatrix();
+      const Eigen::Isometry3d sensor =
+          body * coinspect::sensing::lidarPoseInBody(spec, 0.7 + 1.3 * view);
+      sensorPoses.push_back(sensor);
+      for (const auto& u : directions.directions()) {
+        const Vec3 w = sensor.linear() * u;
+        for (int k = 0; k < 3; ++k) {
+          o.push_back(static_cast<float>(sensor.translation()[k]));
+          d.push_back(static_cast<float>(w[k]));
+        }
+      }
+    }
+    ok = true;
+  }
+  size_t rays() const { return o.size() / 3; }
+};
+
+const Setup& setup() {
+  static const Setup s;
+  return s;
+}
+
+bool ready(benchmark::State& state) {
+  if (setup().ok) return true;
+  state.SkipWithError("CARIC MBS mesh not found under COINSPECT_SHARED_DIR");
+  return false;
+}
+
+void finish(benchmark::State& state, size_t returns) {
+  const auto sweeps = static_cast<double>(kPoses * state.iterations());
+  state.counters["sweeps_per_s"] = benchmark::Counter(sweeps, benchmark::Counter::kIsRate);
+  state.counters["rays_per_s"] = benchmark::Counter(
+      static_cast<double>(setup().rays() * state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["returns_per_sweep"] = static_cast<double>(returns) / sweeps;
+}
+
+void BM_LidarSimulatorSweep(benchmark::State& state) {
+  if (!ready(state)) return;
+  const Setup& s = setup();
+  LidarSimulator lidar(s.spec, 1);
+  LidarScan scan;
+  size_t returns = 0;
+  for (auto _ : state) {
+    for (const auto& pose : s.sensorPoses) {
+      lidar.sweep(*s.caster, pose, scan);
+      returns += scan.points.size();
+      benchmark::DoNotOptimize(scan.points.data());
+    }
+  }
+  finish(state, returns);
+}
+
+void BM_BareEmbreeSweep(benchmark::State& state) {
+  if (!ready(state)) return;
+  const Setup& s = setup();
+  const float minRange = static_cast<float>(s.spec.minRange);
+  const float maxRange = static_cast<float>(s.spec.maxRange);
+  std::vector<float> ranges(s.rays());
+  size_t returns = 0;
+  for (auto _ : state) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    alignas(64) RTCRayHit16 p;
+    alignas(64) int valid[16];
+    for (size_t start = 0; start < s.rays(); start += 16) {
+      const size_t n = std::min<size_t>(16, s.rays() - start);
+      for (size_t k = 0; k < 16; ++k) {
+        valid[k] = k < n ? -1 : 0;
+        if (k >= n) continue;
+        const float* o = &s.o[3 * (start + k)];
+        const float* d = &s.d[3 * (start + k)];
+        p.ray.org_x[k] = o[0];
+        p.ray.org_y[k] = o[1];
+        p.ray.org_z[k] = o[2];
+        p.ray.dir_x[k] = d[0];
+        p.ray.dir_y[k] = d[1];
+        p.ray.dir_z[k] = d[2];
+        p.ray.tnear[k] = 0.0f;
+        p.ray.tfar[k] = maxRange;
+        p.ray.time[k] = 0.0f;
+        p.ray.mask[k] = 0xffffffffu;
+        p.ray.id[k] = static_cast<unsigned>(k);
+        p.ray.flags[k] = 0;
+        p.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+        p.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+      }
+      rtcIntersect16(valid, s.bare->scene, &context, &p);
+      for (size_t k = 0; k < n; ++k) {
+        const bool hit = p.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID;
+        const float r = p.ray.tfar[k];
+        const bool kept = hit && minRange < r && r < maxRange;
+        ranges[start + k] = kept ? r : INFINITY;
+        returns += kept ? 1 : 0;
+      }
+    }
+    benchmark::DoNotOptimize(ranges.data());
+  }
+  finish(state, returns);
+}
+
+BENCHMARK(BM_LidarSimulatorSweep)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BareEmbreeSweep)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,66 @@
+// The simulated LiDAR: one instantaneous sweep of all rays of a LidarSpec through the world
+// (like the reference's GPU ray sensor, which renders a whole revolution at one instant).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cstdint>
+#include <vector>
+
+#include "coinspect/core/random.h"
+#include "coinspect/sensing/lidar_model.h"
+#include "coinspect/world/ray_caster.h"
+
+namespace coinspect::sensing {
+
+struct LidarScan {
+  double time = 0.0;                                                   // simulated s
+  Eigen::Isometry3d sensorPose = Eigen::Isometry3d::Identity();        // sensor in the world
+  Eigen::Isometry3d sensorPoseInBody = Eigen::Isometry3d::Identity();  // sensor in the body
+  std::vector<Eigen::Vector3f> points;  // returns in the SENSOR frame, ray order (column-major)
+};
+
+// Something that blocks rays but is not part of the static world (another UAV).
+struct SphereOccluder {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // world frame
+  double radius = 0.0;                               // m
+};
+
+// Copyable; sweeps draw noise from the simulator's own Rng, so each LiDAR owns one simulator.
+class LidarSimulator {
+ public:
+  LidarSimulator(const LidarSpec& spec, uint64_t seed);
+
+  const LidarSpec& spec() const { return spec_; }
+  // Unit ray directions in the sensor frame, index = column * channels + channel.
+  const std::vector<Eigen::Vector3d>& directions() const { return directions_; }
+
+  // Casts every ray from sensorPoseInWorld; sets out.sensorPose and out.points (returns with
+  // minRange < r < maxRange, Gaussian range noise when the spec has some, the noisy range checked
+  // again as the reference does). out.time and out.sensorPoseInBody are left to the caller.
+  // Rays may also stop at the given spheres.
+  void sweep(const world::RayCaster& caster, const Eigen::Isometry3d& sensorPoseInWorld,
+             LidarScan& out, const std::vector<SphereOccluder>& occluders = {});
+
+  // The same from the body pose at simulated time t: fills every field of out, with the sensor
+  // placed by lidarPoseInBody(spec, t).
+  void sweepFromBody(const world::RayCaster& caster, double time,
+                     const Eigen::Isometry3d& bodyPoseInWorld, LidarScan& out,
+                     const std::vector<SphereOccluder>& occluders = {});
+
+ private:
+  LidarSpec spec_;
+  Rng rng_;
+  std::vector<Eigen::Vector3d> directions_;
+  // Per-sweep buffers, kept to avoid allocating during a mission.
+  std::vector<world::Vec3> origins_, worldDirections_;
+  std::vector<double> distances_;
+};
+
+// Distance along the unit direction from origin to the first crossing of the sphere's surface
+// (from outside), or +infinity.
+double raySphereDistance(const Eigen::Vector3d& origin, const Eigen::Vector3d& unitDirection,
+                         const SphereOccluder& sphere);
+
+}  // namespace coinspect::sensing
