@@ -10,5 +10,6 @@ namespace coinspect::app {
 void addScenarioCommand(CLI::App& root);
 void addScoreCommand(CLI::App& root);
 void addDemoCommand(CLI::App& root);
+void addRunCommand(CLI::App& root);
 
 }  // namespace coinspect::app

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   coinspect::app::addScenarioCommand(app);
   coinspect::app::addScoreCommand(app);
   coinspect::app::addDemoCommand(app);
+  coinspect::app::addRunCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -25,7 +25,7 @@ LidarSimulator::LidarSimulator(const LidarSpec& spec, uint64_t seed) : spec_(spe
 double raySphereDistance(const Eigen::Vector3d& origin, const Eigen::Vector3d& unitDirection,
                          const SphereOccluder& sphere) {
   constexpr double kNone = std::numeric_limits<double>::infinity();
-  const Eigen::Vector3d m = origin - sphere.centre;
+  const Eigen::Vector3d m = origin - sphere.center;
   const double c = m.squaredNorm() - sphere.radius * sphere.radius;
   // An origin inside the sphere (the UAV's own hull, say) sees through it.
   if (c <= 0.0) return kNone;

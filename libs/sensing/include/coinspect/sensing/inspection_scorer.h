@@ -9,6 +9,7 @@
 
 #include "coinspect/sensing/camera_model.h"
 #include "coinspect/sensing/capture_state.h"
+#include "coinspect/sensing/sphere_occluder.h"
 #include "coinspect/world/interest_points.h"
 #include "coinspect/world/oriented_box.h"
 #include "coinspect/world/ray_caster.h"
@@ -59,11 +60,6 @@ struct PointScore {
 };
 
 // Other UAVs (or anything movable) that can hide points: spheres and oriented boxes.
-struct SphereOccluder {
-  Vec3 center = Vec3::Zero();
-  double radius = 0.0;
-};
-
 struct Occluders {
   std::vector<SphereOccluder> spheres;
   std::vector<world::OrientedBox> boxes;

@@ -10,6 +10,7 @@
 
 #include "coinspect/core/random.h"
 #include "coinspect/sensing/lidar_model.h"
+#include "coinspect/sensing/sphere_occluder.h"
 #include "coinspect/world/ray_caster.h"
 
 namespace coinspect::sensing {
@@ -19,12 +20,6 @@ struct LidarScan {
   Eigen::Isometry3d sensorPose = Eigen::Isometry3d::Identity();        // sensor in the world
   Eigen::Isometry3d sensorPoseInBody = Eigen::Isometry3d::Identity();  // sensor in the body
   std::vector<Eigen::Vector3f> points;  // returns in the SENSOR frame, ray order (column-major)
-};
-
-// Something that blocks rays but is not part of the static world (another UAV).
-struct SphereOccluder {
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // world frame
-  double radius = 0.0;                               // m
 };
 
 // Copyable; sweeps draw noise from the simulator's own Rng, so each LiDAR owns one simulator.

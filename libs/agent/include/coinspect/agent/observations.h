@@ -1,0 +1,84 @@
+// What a robot can observe about itself and its surroundings, as plain data. The agent library
+// depends on core and Eigen only: strategies never see meshes, interest points or another unit's
+// hidden state, and these structs carry nothing of the kind.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace coinspect::agent {
+
+using Vec3 = Eigen::Vector3d;
+
+enum class Role { GroundStation, Explorer, Photographer };
+const char* toString(Role role);
+
+// Ground-truth odometry of one unit (the reference publishes it without noise).
+struct Odometry {
+  double time = 0.0;                          // s, simulated
+  Vec3 position = Vec3::Zero();               // world frame, m
+  Vec3 velocity = Vec3::Zero();               // world frame, m/s
+  double yaw = 0.0, pitch = 0.0, roll = 0.0;  // Z-Y-X Euler angles, rad
+  Vec3 angularVelocity = Vec3::Zero();        // body frame, rad/s
+};
+
+// Gimbal angles relative to the stabilizer (yaw-only) frame; positive pitch looks down.
+struct GimbalState {
+  double pitch = 0.0, yaw = 0.0;                       // rad
+  double pitchRate = 0.0, yawRate = 0.0;               // rad/s
+  double pitchMax = 0.0, yawMax = 0.0, rateMax = 0.0;  // limits (rad, rad/s)
+};
+
+// A LiDAR key frame: points already in the world frame, shared between receivers without copies.
+struct KeyFrame {
+  uint64_t id = 0;  // unique per producing unit
+  std::string producer;
+  double time = 0.0;
+  Vec3 position = Vec3::Zero();  // body position when the scan was taken
+  Eigen::Quaterniond bodyOrientation = Eigen::Quaterniond::Identity();
+  std::vector<Eigen::Vector3f> points;  // world frame, downsampled
+};
+using KeyFrameView = std::shared_ptr<const KeyFrame>;
+
+// The latest LiDAR sweep of the unit itself (explorers only), world frame.
+struct LidarView {
+  double time = 0.0;
+  Vec3 sensorPosition = Vec3::Zero();
+  std::shared_ptr<const std::vector<Eigen::Vector3f>> points;  // null before the first sweep
+};
+
+struct ReceivedMessage {
+  std::string from;
+  std::string topic;
+  std::vector<uint8_t> bytes;
+  double time = 0.0;  // when it was sent (and delivered: links have no latency in CARIC)
+};
+
+// A unit in line of sight this decision, with its odometry (the reference shares it over ppcom).
+struct NeighbourInfo {
+  std::string name;
+  Role role = Role::Photographer;
+  Odometry odometry;
+};
+
+// One capture of the unit's own camera: how much it brought, never which points.
+struct CaptureReport {
+  double time = 0.0;
+  size_t pointsCounted = 0;   // points of this capture with score >= 0.2
+  size_t pointsImproved = 0;  // of those, how many beat the unit's previous best
+  double scoreGained = 0.0;   // increase of the unit's own-log total
+};
+
+// A bounding box of the mission (CARIC publishes them to every unit).
+struct BoxView {
+  Vec3 center = Vec3::Zero();
+  Vec3 size = Vec3::Zero();                                // full edges along the box axes
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // columns: box axes in the world
+};
+
+}  // namespace coinspect::agent

@@ -1,0 +1,64 @@
+// A mission: the scenario, the fleet's vehicles, gimbals, LiDARs and strategies, the links and
+// the ground station's tally, advanced by the deterministic multi-rate loop described in
+// doc/architecture.md ("The tick").
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "coinspect/agent/strategy.h"
+#include "coinspect/core/config.h"
+#include "coinspect/sim/mission_config.h"
+#include "coinspect/sim/mission_summary.h"
+#include "coinspect/vehicle/vehicle_state.h"
+#include "coinspect/world/scenario.h"
+
+namespace coinspect::sim {
+
+class Mission {
+ public:
+  // Reads [mission], [strategy], faults and blackouts from `ini`, builds the scenario it names
+  // and one strategy per UAV from `registry` (each reads its own keys from `ini`). The caller
+  // then checks ini.requireAllKeysUsed(). Throws InputError for bad input.
+  Mission(const Config& ini, const agent::StrategyRegistry& registry,
+          std::optional<uint64_t> seedOverride = {});
+  // The same with a scenario built by the caller ([mission] scenario is then not read).
+  Mission(world::Scenario scenario, const Config& ini, const agent::StrategyRegistry& registry,
+          std::optional<uint64_t> seedOverride = {});
+  ~Mission();
+  Mission(const Mission&) = delete;
+  Mission& operator=(const Mission&) = delete;
+
+  // Runs until the mission ends (budget used up, or no take-off within start_timeout).
+  void run();
+  // One tick of physics_step; false once the mission has ended.
+  bool step();
+  // Runs until simulated time `time` or the end, whichever comes first.
+  void runUntil(double time);
+  bool finished() const;
+
+  double time() const;  // simulated s
+  const world::Scenario& scenario() const;
+  const MissionConfig& config() const;
+  const std::vector<MissionEvent>& events() const;
+  MissionSummary summary() const;
+  // FNV-1a over every vehicle state and gimbal angle at every controller tick (0.05 s): equal
+  // digests mean equal trajectories, bit for bit.
+  uint64_t stateDigest() const;
+
+  // Per-unit access for tests and tools (index in the fleet; throws InputError for a bad name).
+  size_t unitIndex(const std::string& name) const;
+  vehicle::VehicleState unitState(size_t unit) const;
+  bool unitAlive(size_t unit) const;
+  double unitOwnScore(size_t unit) const;
+  double gcsScore() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace coinspect::sim

@@ -1,0 +1,63 @@
+// The mission part of a run's INI file ([mission], [strategy], [fault.<n>], [blackout.<n>]),
+// read strictly; every key is documented in doc/config.md, "Missions (coinspect run)".
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "coinspect/core/config.h"
+#include "coinspect/sensing/inspection_scorer.h"
+#include "coinspect/world/scenario.h"
+
+namespace coinspect::sim {
+
+// A unit stops working (motors off, it falls) at a given simulated time.
+struct FaultSpec {
+  std::string unit;
+  double at = 0.0;  // s since the simulation began
+};
+
+// Links are down in [from, to): all of them, or only those of the listed units.
+struct BlackoutSpec {
+  double from = 0.0;
+  double to = 0.0;
+  std::vector<std::string> units;  // empty: every link
+};
+
+struct MissionConfig {
+  std::string source;    // the INI file, for error messages
+  std::string scenario;  // generator name, scenario.ini or CARIC folder (resolved path)
+  uint64_t scenarioSeed = 1;
+  uint64_t seed = 1;
+  std::optional<double> budget;  // s; the scenario's when absent
+  sensing::ScoringMode scoring = sensing::ScoringMode::Caric;
+  std::string links = "caric";
+  double linkRange = 100.0;         // m, for links = range
+  double startHeight = 0.1;         // m above the ground
+  double startSpeed = 0.1;          // m/s
+  double physicsStep = 0.0025;      // s
+  double startTimeout = 60.0;       // s without take-off before the run gives up
+  std::filesystem::path airframes;  // airframes.ini
+  std::string explorerAirframe = "explorer";
+  std::string photographerAirframe = "photographer";
+  std::filesystem::path lidars;                 // lidars.ini
+  std::string explorerLidar = "vlp16-tilting";  // "none" disables the LiDAR
+  std::string strategy;
+  std::vector<FaultSpec> faults;
+  std::vector<BlackoutSpec> blackouts;
+
+  // Reads the keys above (marking them used); `seedOverride` replaces [mission] seed.
+  static MissionConfig read(const Config& config, std::optional<uint64_t> seedOverride = {});
+};
+
+// The installed defaults (share/coinspect) of this build.
+std::filesystem::path defaultShareDir();
+
+// Builds the scenario named by `config.scenario`: a CARIC folder (box_description.yaml), a folder
+// with scenario.ini or an .ini file, else a generator name.
+world::Scenario loadMissionScenario(const MissionConfig& config);
+
+}  // namespace coinspect::sim

@@ -1,0 +1,64 @@
+// What a mission reports when it ends: score, collisions, traffic, timing.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace coinspect::sim {
+
+// Something that happened, for the summary and (later) the recorder.
+struct MissionEvent {
+  double time = 0.0;  // s since the simulation began
+  std::string kind;   // mission-start, mission-end, no-takeoff, collision, death, fault,
+                      // blackout-start, blackout-end
+  std::string unit;   // empty for mission-wide events
+  std::string detail;
+};
+
+struct UnitSummary {
+  std::string name;
+  std::string role;
+  bool alive = true;
+  std::string deathCause;      // empty while alive
+  double distanceFlown = 0.0;  // m, while alive
+  size_t captures = 0;
+  size_t detected = 0;    // points in the unit's own log
+  double ownScore = 0.0;  // total of its own log
+  long long rejectedCommands = 0;
+};
+
+// Wall-clock seconds per stage of the loop (for benchmarks; they never influence results).
+struct StageTimes {
+  double physics = 0.0, decisions = 0.0, lidar = 0.0, topology = 0.0, scoring = 0.0,
+         collisions = 0.0;
+};
+
+struct MissionSummary {
+  std::string scenario;
+  std::string strategy;
+  uint64_t seed = 0;
+  std::string scoring;
+  double score = 0.0;  // Q at the ground station
+  size_t detected = 0;
+  size_t totalPoints = 0;
+  std::vector<UnitSummary> units;
+  size_t collisions = 0;  // units that died in a collision
+  size_t deaths = 0;
+  uint64_t messagesSent = 0, messagesDelivered = 0, messagesDropped = 0;
+  uint64_t keyFrames = 0, keyFramesDelivered = 0;
+  long long rejectedCommands = 0;
+  bool started = false;
+  double startTime = 0.0;    // s of simulated time when the mission clock started
+  double missionTime = 0.0;  // s on the mission clock at the end
+  double budget = 0.0;
+  double simTime = 0.0;   // s simulated in total
+  double wallTime = 0.0;  // s
+  double realTimeFactor() const { return wallTime > 0.0 ? simTime / wallTime : 0.0; }
+  StageTimes stages;
+};
+
+// Human-readable summary, one topic per line ("score ...", "collisions ...", ...).
+std::string formatSummary(const MissionSummary& summary);
+
+}  // namespace coinspect::sim

@@ -1,0 +1,483 @@
+// Construction of a mission and its loop (doc/architecture.md, "The tick").
+#include "coinspect/sim/mission.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+#include "coinspect/core/error.h"
+#include "coinspect/core/random.h"
+#include "coinspect/sensing/lidar_model.h"
+#include "coinspect/vehicle/airframe.h"
+#include "mission_impl.h"
+
+namespace coinspect::sim {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+long long ticksFor(double period, double step) {
+  return std::max(1LL, std::llround(period / step));
+}
+
+agent::Role toAgentRole(world::UnitRole role) {
+  switch (role) {
+    case world::UnitRole::GroundStation:
+      return agent::Role::GroundStation;
+    case world::UnitRole::Explorer:
+      return agent::Role::Explorer;
+    case world::UnitRole::Photographer:
+      return agent::Role::Photographer;
+  }
+  return agent::Role::Photographer;
+}
+
+template <class Map>
+const typename Map::mapped_type& lookup(const Map& map, const std::string& name,
+                                        const std::string& source, const std::string& key) {
+  const auto found = map.find(name);
+  if (found == map.end()) {
+    std::string known;
+    for (const auto& entry : map)
+      known += (known.empty() ? "" : ", ") + entry.first;
+    throw InputError(source, key, "unknown model '" + name + "' (known: " + known + ")");
+  }
+  return found->second;
+}
+
+}  // namespace
+
+Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Config& ini,
+                    const agent::StrategyRegistry& registry)
+    : config(std::move(configIn)), scenario(std::move(scenarioIn)) {
+  step = config.physicsStep;
+  budget = config.budget.value_or(scenario.missionBudget);
+  controlPeriod = ticksFor(vehicle::kControlPeriod, step);
+  gimbalPeriod = ticksFor(1.0 / sensing::Gimbal::kUpdateRate, step);
+  monitorPeriod = ticksFor(0.01, step);
+  topologyPeriod = ticksFor(0.02, step);
+  caster = std::make_unique<world::RayCaster>(scenario.meshes, scenario.groundZ);
+  linkModel =
+      comms::makeLinkModel(config.links, config.linkRange, config.source + ": [mission] links");
+  for (const auto& box : scenario.boxes)
+    boxes.push_back({box.center, box.size, box.rotation});
+
+  const auto airframes = vehicle::loadAirframes(config.airframes);
+  const auto& explorerFrame =
+      lookup(airframes, config.explorerAirframe, config.source, "[mission] explorer_airframe");
+  const auto& photographerFrame = lookup(airframes, config.photographerAirframe, config.source,
+                                         "[mission] photographer_airframe");
+  std::map<std::string, sensing::LidarSpec> lidars;
+  if (config.explorerLidar != "none") lidars = sensing::loadLidarModels(config.lidars);
+
+  const size_t pointCount = scenario.interestPoints.size();
+  const Rng seeds(config.seed);
+  units.resize(scenario.fleet.size());
+  for (size_t i = 0; i < units.size(); ++i) {
+    auto& unit = units[i];
+    unit.spec = &scenario.fleet[i];
+    unit.role = toAgentRole(unit.spec->role);
+    unit.log = sensing::ScoreLog(pointCount);
+    if (unit.role == agent::Role::GroundStation) {
+      if (!station) station = i;
+      unit.lastPosition = unit.spec->startPosition;
+      continue;
+    }
+    const auto& frame = unit.role == agent::Role::Explorer ? explorerFrame : photographerFrame;
+    unit.collisionRadius = frame.collisionRadius;
+    unit.vehicle = std::make_unique<vehicle::Multirotor>(frame, unit.spec->startPosition,
+                                                         unit.spec->startYaw, scenario.groundZ);
+    unit.gimbal = std::make_unique<sensing::Gimbal>(unit.spec->camera);
+    unit.lastPosition = unit.spec->startPosition;
+    if (unit.role == agent::Role::Explorer && config.explorerLidar != "none") {
+      const auto& spec =
+          lookup(lidars, config.explorerLidar, config.source, "[mission] explorer_lidar");
+      unit.lidar =
+          std::make_unique<ExplorerLidar>(spec, seeds.fork(2000 + i).next(), unit.spec->name);
+      unit.lidarPeriod = ticksFor(1.0 / unit.lidar->rate(), step);
+    }
+    const agent::StrategyContext context{
+        ini, config.strategy, unit.spec->name, unit.role, i, seeds.fork(1000 + i).next()};
+    unit.strategy = registry.create(config.strategy, context);
+    const double rate = unit.strategy->decisionRate();
+    if (!(rate > 0.0) || !std::isfinite(rate))
+      throw InputError(config.source, "[strategy] name", "strategy gives a non-positive rate");
+    unit.decisionPeriod = ticksFor(1.0 / rate, step);
+    unit.capturePeriod = ticksFor(
+        sensing::capturePeriod(unit.spec->camera.triggerInterval, step, config.scoring), step);
+    unit.nextCapture = unit.capturePeriod;
+  }
+  // Faults and blackouts name units: check them now.
+  for (const auto& fault : config.faults)
+    faultUnits.push_back(unitIndexOf(fault.unit, "[fault] unit"));
+  for (const auto& blackout : config.blackouts) {
+    std::vector<size_t> indices;
+    for (const auto& name : blackout.units)
+      indices.push_back(unitIndexOf(name, "[blackout] units"));
+    blackoutUnits.push_back(indices);
+  }
+  faultsApplied.assign(config.faults.size(), 0);
+  blackoutActive.assign(config.blackouts.size(), 0);
+
+  scorer =
+      std::make_unique<sensing::InspectionScorer>(scenario.interestPoints, *caster, config.scoring);
+  tally = sensing::GroundStationTally(pointCount, config.scoring);
+  links = comms::LinkMatrix(units.size());
+  network = std::make_unique<comms::Network>(units.size());
+  exchange = std::make_unique<comms::KeyFrameExchange>(units.size());
+}
+
+size_t Mission::Impl::unitIndexOf(const std::string& name, const std::string& where) const {
+  for (size_t i = 0; i < units.size(); ++i)
+    if (units[i].spec->name == name) return i;
+  throw InputError(config.source, where, "no unit named '" + name + "' in the fleet");
+}
+
+void Mission::Impl::event(const std::string& kind, const std::string& unit,
+                          const std::string& detail) {
+  events.push_back({now(), kind, unit, detail});
+}
+
+void Mission::Impl::kill(size_t i, const std::string& cause) {
+  auto& unit = units[i];
+  if (!unit.alive()) return;
+  if (unit.vehicle)
+    unit.vehicle->kill();
+  else
+    unit.stationAlive = false;
+  unit.deathCause = cause;
+  event("death", unit.spec->name, cause);
+}
+
+std::vector<bool> Mission::Impl::aliveFlags() const {
+  std::vector<bool> alive(units.size());
+  for (size_t i = 0; i < units.size(); ++i)
+    alive[i] = units[i].alive();
+  return alive;
+}
+
+void Mission::Impl::syncVehicles() {
+  const double t = now();
+  const double dt = t - syncedTo;
+  if (dt <= 0.0) return;
+  const auto stageStart = Clock::now();
+  for (auto& unit : units) {
+    if (!unit.vehicle) continue;
+    const bool wasAlive = unit.vehicle->alive();
+    unit.vehicle->advance(dt);
+    const auto& p = unit.vehicle->state().position;
+    if (wasAlive) unit.distanceFlown += (p - unit.lastPosition).norm();
+    unit.lastPosition = p;
+  }
+  syncedTo = t;
+  stages.physics += secondsSince(stageStart);
+}
+
+void Mission::Impl::applyFaultsAndBlackouts() {
+  const double t = now();
+  for (size_t f = 0; f < config.faults.size(); ++f) {
+    if (faultsApplied[f] || config.faults[f].at > t) continue;
+    faultsApplied[f] = 1;
+    event("fault", config.faults[f].unit, "unit fails");
+    kill(faultUnits[f], "fault injected at " + std::to_string(config.faults[f].at) + " s");
+  }
+  for (size_t b = 0; b < config.blackouts.size(); ++b) {
+    const auto& blackout = config.blackouts[b];
+    const bool active = t >= blackout.from && t < blackout.to;
+    if (active == static_cast<bool>(blackoutActive[b])) continue;
+    blackoutActive[b] = active;
+    const std::string scope = blackout.units.empty() ? "all links" : "links of listed units";
+    event(active ? "blackout-start" : "blackout-end", "", scope);
+  }
+}
+
+void Mission::Impl::monitor() {
+  const auto stageStart = Clock::now();
+  // Collisions with surfaces (the ground is not one), then between UAVs.
+  for (size_t i = 0; i < units.size(); ++i) {
+    auto& unit = units[i];
+    if (!unit.vehicle || !unit.vehicle->alive() || !unit.vehicle->airborne()) continue;
+    // Mesh surfaces at ground level are ground (CARIC meshes have floor plates): close to the
+    // ground a UAV is checked as if it were its collision radius (+ 5 cm) above it, which still
+    // catches walls beside it.
+    world::Vec3 p = unit.vehicle->state().position;
+    p.z() = std::max(p.z(), scenario.groundZ + unit.collisionRadius + 0.05);
+    const double distance = caster->distanceToSurface(p, unit.collisionRadius);
+    if (distance < unit.collisionRadius) {
+      event("collision", unit.spec->name, "surface");
+      ++collisionDeaths;
+      kill(i, "collision with a surface");
+    }
+  }
+  for (size_t i = 0; i < units.size(); ++i) {
+    for (size_t j = i + 1; j < units.size(); ++j) {
+      auto& a = units[i];
+      auto& b = units[j];
+      if (!a.vehicle || !b.vehicle || !a.vehicle->alive() || !b.vehicle->alive()) continue;
+      if (!a.vehicle->airborne() && !b.vehicle->airborne()) continue;
+      const double gap = (a.vehicle->state().position - b.vehicle->state().position).norm();
+      if (gap >= a.collisionRadius + b.collisionRadius) continue;
+      event("collision", a.spec->name, b.spec->name);
+      event("collision", b.spec->name, a.spec->name);
+      collisionDeaths += 2;
+      kill(i, "collision with " + b.spec->name);
+      kill(j, "collision with " + a.spec->name);
+    }
+  }
+  // The mission clock: any UAV above start_height and faster than start_speed.
+  if (!started) {
+    for (const auto& unit : units) {
+      if (!unit.vehicle) continue;
+      const auto& state = unit.vehicle->state();
+      if (state.position.z() - scenario.groundZ > config.startHeight &&
+          state.velocity.norm() > config.startSpeed) {
+        started = true;
+        startTime = now();
+        event("mission-start", unit.spec->name, "take-off");
+        break;
+      }
+    }
+  }
+  stages.collisions += secondsSince(stageStart);
+}
+
+void Mission::Impl::updateTopology() {
+  const auto stageStart = Clock::now();
+  std::vector<comms::LinkEndpoint> endpoints(units.size());
+  // In caric mode a crashed UAV's antennas still reach the ground station (the reference merges
+  // its log); messages still need both ends alive (the network checks).
+  const bool deadStillLinked = sensing::capturesWhenCrashed(config.scoring);
+  for (size_t i = 0; i < units.size(); ++i) {
+    const auto& unit = units[i];
+    endpoints[i].position = unit.lastPosition;
+    endpoints[i].antennaOffset = unit.spec->antennaOffset;
+    endpoints[i].alive = unit.alive() || (unit.vehicle && deadStillLinked);
+  }
+  linkModel->update(*caster, endpoints, links);
+  for (size_t b = 0; b < config.blackouts.size(); ++b) {
+    if (!blackoutActive[b]) continue;
+    if (blackoutUnits[b].empty()) {
+      links.clear();
+      continue;
+    }
+    for (const size_t u : blackoutUnits[b])
+      for (size_t j = 0; j < units.size(); ++j)
+        if (j != u) links.setLinked(static_cast<uint32_t>(u), static_cast<uint32_t>(j), false);
+  }
+  network->setTopology(links, aliveFlags(), now());
+  if (station && units[*station].alive()) {
+    for (size_t i = 0; i < units.size(); ++i)
+      if (units[i].vehicle &&
+          links.linked(static_cast<uint32_t>(*station), static_cast<uint32_t>(i)))
+        tally.merge(units[i].log, units[i].alive());
+  }
+  stages.topology += secondsSince(stageStart);
+}
+
+void Mission::Impl::sweepLidars() {
+  std::vector<std::pair<world::Vec3, double>> spheres;
+  for (size_t i = 0; i < units.size(); ++i) {
+    auto& unit = units[i];
+    if (!unit.lidar || !unit.alive() || tick % unit.lidarPeriod != 0) continue;
+    const auto stageStart = Clock::now();
+    spheres.clear();
+    for (size_t j = 0; j < units.size(); ++j)
+      if (j != i && units[j].vehicle)
+        spheres.emplace_back(units[j].vehicle->state().position, units[j].collisionRadius);
+    auto keyFrame =
+        unit.lidar->sweep(*caster, now(), unit.vehicle->state(), spheres, unit.lidarView);
+    if (keyFrame) {
+      COINSPECT_ASSERT(keyFrame->id == unit.keyFrames.size());
+      unit.keyFrames.push_back(keyFrame);
+      unit.pendingOwnKeyFrames.push_back(keyFrame);
+      exchange->publish(static_cast<uint32_t>(i), keyFrame->id, links, aliveFlags(), now());
+      ++keyFrameCount;
+    }
+    stages.lidar += secondsSince(stageStart);
+  }
+}
+
+void Mission::Impl::capture(size_t i) {
+  auto& unit = units[i];
+  if (!unit.alive() && !sensing::capturesWhenCrashed(config.scoring)) return;
+  const auto stageStart = Clock::now();
+  const auto& state = unit.vehicle->state();
+  sensing::CaptureState capture;
+  capture.position = state.position;
+  capture.yaw = state.yaw;
+  capture.pitch = state.pitch;
+  capture.roll = state.roll;
+  capture.linearVelocity = state.velocity;
+  capture.angularVelocity = state.angularVelocity;
+  unit.gimbal->applyTo(capture);
+  occluders.spheres.clear();
+  for (size_t j = 0; j < units.size(); ++j)
+    if (j != i && units[j].vehicle)
+      occluders.spheres.push_back({units[j].vehicle->state().position, units[j].collisionRadius});
+  scorer->score(unit.spec->camera, capture, occluders, scores);
+  agent::CaptureReport report;
+  report.time = now();
+  for (const auto& s : scores)
+    report.pointsCounted += s.counted ? 1 : 0;
+  report.pointsImproved = unit.log.record(scores);
+  if (report.pointsImproved > 0) {
+    const double total = unit.log.totalScore();
+    report.scoreGained = total - unit.ownScore;
+    unit.ownScore = total;
+  }
+  ++unit.captures;
+  unit.pendingCaptures.push_back(report);
+  stages.scoring += secondsSince(stageStart);
+}
+
+void Mission::Impl::hashStates() {
+  const auto mix = [this](double value) {
+    unsigned char bytes[sizeof(double)];
+    std::memcpy(bytes, &value, sizeof(double));
+    for (const unsigned char byte : bytes) {
+      digest ^= byte;
+      digest *= 1099511628211ull;
+    }
+  };
+  for (const auto& unit : units) {
+    if (!unit.vehicle) continue;
+    const auto& s = unit.vehicle->state();
+    for (int k = 0; k < 3; ++k) {
+      mix(s.position[k]);
+      mix(s.velocity[k]);
+      mix(s.angularVelocity[k]);
+    }
+    mix(s.yaw);
+    mix(s.pitch);
+    mix(s.roll);
+    mix(unit.gimbal->pitch());
+    mix(unit.gimbal->yaw());
+  }
+}
+
+bool Mission::Impl::stepOnce() {
+  if (ended) return false;
+  const auto stageStart = Clock::now();
+  const bool monitorTick = tick % monitorPeriod == 0;
+  const bool topologyTick = tick % topologyPeriod == 0;
+  bool needState = monitorTick || topologyTick || tick % controlPeriod == 0;
+  for (const auto& unit : units)
+    if (unit.vehicle)
+      needState = needState || tick >= unit.nextCapture || tick % unit.decisionPeriod == 0 ||
+                  (unit.lidar && tick % unit.lidarPeriod == 0);
+
+  applyFaultsAndBlackouts();
+  if (needState) syncVehicles();
+  if (tick % controlPeriod == 0) hashStates();
+  if (monitorTick) monitor();
+  if (topologyTick) updateTopology();
+  sweepLidars();
+  for (size_t i = 0; i < units.size(); ++i) {
+    auto& unit = units[i];
+    if (!unit.vehicle || tick < unit.nextCapture) continue;
+    unit.nextCapture += unit.capturePeriod;
+    capture(i);
+  }
+  if (tick % gimbalPeriod == 0)
+    for (auto& unit : units)
+      if (unit.gimbal) unit.gimbal->update(now());
+  for (size_t i = 0; i < units.size(); ++i)
+    if (units[i].vehicle && units[i].alive() && tick % units[i].decisionPeriod == 0) decide(i);
+
+  // The end: the budget on the mission clock is used up (motors stop), or nobody took off.
+  const double t = now();
+  if (started && t - startTime >= budget - 1e-9) {
+    ended = true;
+    event("mission-end", "", "budget used");
+  } else if (!started && t >= config.startTimeout) {
+    ended = true;
+    event("no-takeoff", "", "no UAV took off within start_timeout");
+  }
+  ++tick;
+  wallTime += secondsSince(stageStart);
+  return !ended;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+Mission::Mission(const Config& ini, const agent::StrategyRegistry& registry,
+                 std::optional<uint64_t> seedOverride) {
+  auto config = MissionConfig::read(ini, seedOverride);
+  auto scenario = loadMissionScenario(config);
+  world::validateScenario(scenario, config.scenario);
+  impl_ = std::make_unique<Impl>(std::move(scenario), std::move(config), ini, registry);
+}
+
+Mission::Mission(world::Scenario scenario, const Config& ini,
+                 const agent::StrategyRegistry& registry, std::optional<uint64_t> seedOverride) {
+  auto config = MissionConfig::read(ini, seedOverride);
+  impl_ = std::make_unique<Impl>(std::move(scenario), std::move(config), ini, registry);
+}
+
+Mission::~Mission() = default;
+
+void Mission::run() {
+  while (impl_->stepOnce()) {
+  }
+}
+
+bool Mission::step() {
+  return impl_->stepOnce();
+}
+
+void Mission::runUntil(double time) {
+  while (impl_->now() < time - 1e-12 && impl_->stepOnce()) {
+  }
+}
+
+bool Mission::finished() const {
+  return impl_->ended;
+}
+double Mission::time() const {
+  return impl_->now();
+}
+const world::Scenario& Mission::scenario() const {
+  return impl_->scenario;
+}
+const MissionConfig& Mission::config() const {
+  return impl_->config;
+}
+const std::vector<MissionEvent>& Mission::events() const {
+  return impl_->events;
+}
+uint64_t Mission::stateDigest() const {
+  return impl_->digest;
+}
+
+size_t Mission::unitIndex(const std::string& name) const {
+  return impl_->unitIndexOf(name, "unit");
+}
+
+vehicle::VehicleState Mission::unitState(size_t unit) const {
+  const auto& u = impl_->units.at(unit);
+  if (u.vehicle) return u.vehicle->state();
+  vehicle::VehicleState state;
+  state.position = u.spec->startPosition;
+  state.time = impl_->now();
+  return state;
+}
+
+bool Mission::unitAlive(size_t unit) const {
+  return impl_->units.at(unit).alive();
+}
+
+double Mission::unitOwnScore(size_t unit) const {
+  return impl_->units.at(unit).ownScore;
+}
+
+double Mission::gcsScore() const {
+  return impl_->tally.totalScore();
+}
+
+}  // namespace coinspect::sim

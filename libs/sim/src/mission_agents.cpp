@@ -1,0 +1,117 @@
+// What a strategy sees (only what its robot could know) and how its commands are applied.
+#include <chrono>
+
+#include "mission_impl.h"
+
+namespace coinspect::sim {
+
+namespace {
+
+agent::Odometry toOdometry(const vehicle::VehicleState& state) {
+  agent::Odometry odometry;
+  odometry.time = state.time;
+  odometry.position = state.position;
+  odometry.velocity = state.velocity;
+  odometry.yaw = state.yaw;
+  odometry.pitch = state.pitch;
+  odometry.roll = state.roll;
+  odometry.angularVelocity = state.angularVelocity;
+  return odometry;
+}
+
+}  // namespace
+
+agent::AgentView Mission::Impl::observe(size_t i) {
+  auto& unit = units[i];
+  agent::AgentView view;
+  view.name = unit.spec->name;
+  view.role = unit.role;
+  view.index = i;
+  view.alive = unit.alive();
+  view.time = now();
+  view.started = started;
+  view.missionTime = started ? now() - startTime : 0.0;
+  view.timeLeft = budget - view.missionTime;
+  view.odometry = toOdometry(unit.vehicle->state());
+  const auto& camera = unit.spec->camera;
+  view.gimbal.pitch = unit.gimbal->pitch();
+  view.gimbal.yaw = unit.gimbal->yaw();
+  view.gimbal.pitchRate = unit.gimbal->pitchRate();
+  view.gimbal.yawRate = unit.gimbal->yawRate();
+  view.gimbal.pitchMax = camera.gimbalPitchMax;
+  view.gimbal.yawMax = camera.gimbalYawMax;
+  view.gimbal.rateMax = camera.gimbalRateMax;
+  view.lidar = unit.lidarView;
+  view.ownKeyFrames = std::move(unit.pendingOwnKeyFrames);
+  unit.pendingOwnKeyFrames.clear();
+  for (const auto& delivery : exchange->takeDeliveries(static_cast<uint32_t>(i)))
+    view.receivedKeyFrames.push_back(units[delivery.from].keyFrames.at(delivery.keyFrameId));
+  for (auto& message : network->takeInbox(static_cast<uint32_t>(i)))
+    view.messages.push_back({units[message.from].spec->name, std::move(message.topic),
+                             std::move(message.payload), message.sentTime});
+  for (const uint32_t j : links.neighbours(static_cast<uint32_t>(i))) {
+    const auto& other = units[j];
+    if (!other.alive()) continue;
+    agent::NeighbourInfo neighbour;
+    neighbour.name = other.spec->name;
+    neighbour.role = other.role;
+    if (other.vehicle) {
+      neighbour.odometry = toOdometry(other.vehicle->state());
+    } else {
+      neighbour.odometry.time = now();
+      neighbour.odometry.position = other.spec->startPosition;
+    }
+    view.neighbours.push_back(neighbour);
+  }
+  view.boxes = &boxes;
+  view.captures = std::move(unit.pendingCaptures);
+  unit.pendingCaptures.clear();
+  view.detectedCount = unit.log.detectedCount();
+  view.ownScore = unit.ownScore;
+  return view;
+}
+
+void Mission::Impl::decide(size_t i) {
+  const auto stageStart = std::chrono::steady_clock::now();
+  auto& unit = units[i];
+  const agent::AgentCommand command = unit.strategy->decide(observe(i));
+  const double t = now();
+  if (command.setpoint) {
+    vehicle::Setpoint setpoint;
+    setpoint.position = command.setpoint->position;
+    setpoint.velocity = command.setpoint->velocity;
+    setpoint.acceleration = command.setpoint->acceleration;
+    setpoint.yaw = command.setpoint->yaw;
+    unit.vehicle->command(setpoint, t);  // a non-finite one is rejected and counted there
+  }
+  if (command.gimbal) {
+    if (command.gimbal->mode == agent::GimbalCommand::Mode::Angles)
+      unit.gimbal->commandAngles(command.gimbal->pitch, command.gimbal->yaw, t);
+    else
+      unit.gimbal->commandRates(command.gimbal->pitch, command.gimbal->yaw, t);
+  }
+  for (const auto& message : command.messages) {
+    if (message.to.empty()) {
+      network->broadcast(static_cast<uint32_t>(i), message.topic, message.bytes);
+      continue;
+    }
+    size_t to = units.size();
+    for (size_t j = 0; j < units.size(); ++j)
+      if (units[j].spec->name == message.to) to = j;
+    if (to == units.size() || to == i) {
+      ++misaddressed;  // no such unit: dropped, like a message to nobody
+      continue;
+    }
+    comms::Message out;
+    out.from = static_cast<uint32_t>(i);
+    out.to = static_cast<uint32_t>(to);
+    out.topic = message.topic;
+    out.payload = message.bytes;
+    out.sentTime = t;
+    network->send(std::move(out));
+  }
+  stages.decisions +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - stageStart).count();
+}
+
+}  // namespace coinspect::sim

@@ -1,0 +1,114 @@
+#include "coinspect/sim/mission_config.h"
+
+#include <cmath>
+
+#include "coinspect/core/error.h"
+#include "coinspect/core/text.h"
+#include "coinspect/world/caric_scenario.h"
+#include "coinspect/world/generators.h"
+#include "coinspect/world/scenario_files.h"
+
+namespace coinspect::sim {
+
+namespace {
+
+bool startsWith(const std::string& text, const std::string& prefix) {
+  return text.compare(0, prefix.size(), prefix) == 0;
+}
+
+double positive(const Config& config, const std::string& section, const std::string& key,
+                double value) {
+  if (!(value > 0.0) || !std::isfinite(value))
+    throw InputError(config.source(), "[" + section + "] " + key, "must be a positive number");
+  return value;
+}
+
+uint64_t nonNegative(const Config& config, const std::string& section, const std::string& key,
+                     long long value) {
+  if (value < 0)
+    throw InputError(config.source(), "[" + section + "] " + key, "must not be negative");
+  return static_cast<uint64_t>(value);
+}
+
+}  // namespace
+
+std::filesystem::path defaultShareDir() {
+  return COINSPECT_SHARE_DIR;
+}
+
+MissionConfig MissionConfig::read(const Config& config, std::optional<uint64_t> seedOverride) {
+  MissionConfig out;
+  out.source = config.source();
+  const std::string m = "mission";
+  const std::string scenario = config.getString(m, "scenario", "");
+  // A relative path is taken from the INI's folder; anything that is not a file or folder there
+  // is a generator name.
+  const std::filesystem::path candidate = config.folder() / scenario;
+  out.scenario =
+      !scenario.empty() && std::filesystem::exists(candidate) ? candidate.string() : scenario;
+  out.scenarioSeed = nonNegative(config, m, "scenario_seed", config.getInt(m, "scenario_seed", 1));
+  out.seed =
+      seedOverride ? *seedOverride : nonNegative(config, m, "seed", config.getInt(m, "seed", 1));
+  if (config.has(m, "budget"))
+    out.budget = positive(config, m, "budget", config.getDouble(m, "budget"));
+  out.scoring = sensing::parseScoringMode(config.getString(m, "scoring", "caric"),
+                                          config.source() + ": [mission] scoring");
+  out.links = config.getString(m, "links", out.links);
+  out.linkRange =
+      positive(config, m, "link_range", config.getDouble(m, "link_range", out.linkRange));
+  out.startHeight = config.getDouble(m, "start_height", out.startHeight);
+  out.startSpeed = config.getDouble(m, "start_speed", out.startSpeed);
+  if (out.startHeight < 0.0 || out.startSpeed < 0.0)
+    throw InputError(config.source(), "[mission] start_height/start_speed", "must not be negative");
+  out.physicsStep =
+      positive(config, m, "physics_step", config.getDouble(m, "physics_step", out.physicsStep));
+  if (out.physicsStep > 0.01)
+    throw InputError(config.source(), "[mission] physics_step", "must be at most 0.01 s");
+  out.startTimeout =
+      positive(config, m, "start_timeout", config.getDouble(m, "start_timeout", out.startTimeout));
+  out.airframes = config.has(m, "airframes") ? config.getPath(m, "airframes")
+                                             : defaultShareDir() / "airframes.ini";
+  out.explorerAirframe = config.getString(m, "explorer_airframe", out.explorerAirframe);
+  out.photographerAirframe = config.getString(m, "photographer_airframe", out.photographerAirframe);
+  out.lidars =
+      config.has(m, "lidars") ? config.getPath(m, "lidars") : defaultShareDir() / "lidars.ini";
+  out.explorerLidar = config.getString(m, "explorer_lidar", out.explorerLidar);
+  out.strategy = config.getString("strategy", "name");
+
+  for (const auto& section : config.sections()) {
+    if (startsWith(section, "fault.")) {
+      FaultSpec fault;
+      fault.unit = config.getString(section, "unit");
+      fault.at = config.getDouble(section, "at");
+      if (fault.at < 0.0)
+        throw InputError(config.source(), "[" + section + "] at", "must not be negative");
+      out.faults.push_back(fault);
+    } else if (startsWith(section, "blackout.")) {
+      BlackoutSpec blackout;
+      blackout.from = config.getDouble(section, "from");
+      blackout.to = config.getDouble(section, "to");
+      if (!(blackout.to > blackout.from))
+        throw InputError(config.source(), "[" + section + "] to", "must be after 'from'");
+      blackout.units = splitTokens(config.getString(section, "units", ""), " \t,");
+      out.blackouts.push_back(blackout);
+    }
+  }
+  return out;
+}
+
+world::Scenario loadMissionScenario(const MissionConfig& config) {
+  namespace fs = std::filesystem;
+  if (config.scenario.empty())
+    throw InputError(config.source, "[mission] scenario", "missing: name a generator or a path");
+  const fs::path path(config.scenario);
+  if (fs::is_directory(path)) {
+    if (fs::exists(path / "box_description.yaml")) return world::importCaricScenario(path);
+    if (fs::exists(path / "scenario.ini")) return world::loadScenario(path / "scenario.ini");
+    throw InputError(config.source, "[mission] scenario",
+                     path.string() + " holds neither box_description.yaml nor scenario.ini");
+  }
+  if (fs::is_regular_file(path)) return world::loadScenario(path);
+  return world::generateScenario(config.scenario, config.scenarioSeed);
+}
+
+}  // namespace coinspect::sim

@@ -1,0 +1,118 @@
+// The mission's model (constant during the run) and state (everything that changes).
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "coinspect/agent/strategy.h"
+#include "coinspect/comms/key_frame_exchange.h"
+#include "coinspect/comms/link_model.h"
+#include "coinspect/comms/network.h"
+#include "coinspect/sensing/camera_model.h"
+#include "coinspect/sensing/inspection_scorer.h"
+#include "coinspect/sensing/score_log.h"
+#include "coinspect/sim/mission.h"
+#include "coinspect/vehicle/multirotor.h"
+#include "coinspect/world/ray_caster.h"
+#include "explorer_lidar.h"
+
+namespace coinspect::sim {
+
+// One unit of the fleet: its constant description and its state.
+struct UnitRuntime {
+  const world::UnitSpec* spec = nullptr;
+  agent::Role role = agent::Role::Photographer;
+  double collisionRadius = 0.0;
+  std::unique_ptr<vehicle::Multirotor> vehicle;  // null for the ground station
+  std::unique_ptr<sensing::Gimbal> gimbal;       // null for the ground station
+  std::unique_ptr<ExplorerLidar> lidar;          // explorers with a LiDAR
+  std::unique_ptr<agent::Strategy> strategy;     // UAVs only
+  long long decisionPeriod = 1;                  // ticks
+  long long lidarPeriod = 1;                     // ticks
+  long long capturePeriod = 1;                   // ticks
+  long long nextCapture = 0;                     // tick
+  sensing::ScoreLog log;
+  double ownScore = 0.0;
+  bool stationAlive = true;  // the ground station (which has no vehicle)
+  std::string deathCause;
+  double distanceFlown = 0.0;
+  world::Vec3 lastPosition = world::Vec3::Zero();
+  size_t captures = 0;
+  // Gathered between two decisions.
+  std::vector<agent::CaptureReport> pendingCaptures;
+  std::vector<agent::KeyFrameView> pendingOwnKeyFrames;
+  std::vector<agent::KeyFrameView> keyFrames;  // all own key frames, by id
+  agent::LidarView lidarView;
+
+  bool isUav() const { return vehicle != nullptr; }
+  bool alive() const { return vehicle ? vehicle->alive() : stationAlive; }
+};
+
+struct Mission::Impl {
+  // Model.
+  MissionConfig config;
+  world::Scenario scenario;
+  std::unique_ptr<world::RayCaster> caster;
+  std::unique_ptr<comms::LinkModel> linkModel;
+  std::vector<agent::BoxView> boxes;
+  double budget = 0.0;
+  double step = 0.0025;
+  long long controlPeriod = 20;   // ticks per controller tick (digest)
+  long long gimbalPeriod = 20;    // ticks, 20 Hz
+  long long monitorPeriod = 4;    // ticks, collisions and the clock rule (100 Hz)
+  long long topologyPeriod = 8;   // ticks, 50 Hz
+  std::optional<size_t> station;  // index of the ground station
+
+  // State.
+  std::vector<UnitRuntime> units;
+  std::unique_ptr<sensing::InspectionScorer> scorer;
+  sensing::GroundStationTally tally;
+  comms::LinkMatrix links;
+  std::unique_ptr<comms::Network> network;
+  std::unique_ptr<comms::KeyFrameExchange> exchange;
+  std::vector<size_t> faultUnits;                  // per fault
+  std::vector<std::vector<size_t>> blackoutUnits;  // per blackout (empty: all links)
+  std::vector<size_t> faultsApplied;               // 0/1 per fault
+  std::vector<uint8_t> blackoutActive;
+  long long tick = 0;
+  bool started = false;
+  double startTime = 0.0;
+  bool ended = false;
+  std::vector<MissionEvent> events;
+  uint64_t digest = 1469598103934665603ull;
+  long long collisionDeaths = 0;
+  uint64_t keyFrameCount = 0;
+  uint64_t misaddressed = 0;  // messages to a unit that does not exist
+  double syncedTo = 0.0;
+  std::vector<sensing::PointScore> scores;  // buffer
+  sensing::Occluders occluders;             // buffer
+
+  // Timing (wall clock, reported only).
+  StageTimes stages;
+  double wallTime = 0.0;
+
+  Impl(world::Scenario scenario, MissionConfig config, const Config& ini,
+       const agent::StrategyRegistry& registry);
+
+  double now() const { return static_cast<double>(tick) * step; }
+  size_t unitIndexOf(const std::string& name, const std::string& where) const;
+  void event(const std::string& kind, const std::string& unit, const std::string& detail);
+  void kill(size_t unit, const std::string& cause);
+
+  bool stepOnce();
+  void syncVehicles();
+  void applyFaultsAndBlackouts();
+  void monitor();
+  void updateTopology();
+  void sweepLidars();
+  void capture(size_t unit);
+  void decide(size_t unit);
+  void hashStates();
+  agent::AgentView observe(size_t unit);
+  std::vector<bool> aliveFlags() const;
+};
+
+}  // namespace coinspect::sim

@@ -1,0 +1,96 @@
+#include "coinspect/sim/mission_summary.h"
+
+#include <cstdio>
+
+#include "mission_impl.h"
+
+namespace coinspect::sim {
+
+MissionSummary Mission::summary() const {
+  const auto& impl = *impl_;
+  MissionSummary out;
+  out.scenario = impl.scenario.name;
+  out.strategy = impl.config.strategy;
+  out.seed = impl.config.seed;
+  out.scoring = sensing::toString(impl.config.scoring);
+  out.score = impl.tally.totalScore();
+  out.detected = impl.tally.detectedCount();
+  out.totalPoints = impl.scenario.interestPoints.size();
+  for (const auto& unit : impl.units) {
+    UnitSummary u;
+    u.name = unit.spec->name;
+    u.role = agent::toString(unit.role);
+    u.alive = unit.alive();
+    u.deathCause = unit.deathCause;
+    u.distanceFlown = unit.distanceFlown;
+    u.captures = unit.captures;
+    u.detected = unit.log.detectedCount();
+    u.ownScore = unit.ownScore;
+    u.rejectedCommands = unit.vehicle ? unit.vehicle->rejectedCommands() : 0;
+    out.rejectedCommands += u.rejectedCommands;
+    out.deaths += u.alive ? 0 : 1;
+    out.units.push_back(u);
+  }
+  out.collisions = static_cast<size_t>(impl.collisionDeaths);
+  const auto totals = impl.network->totals();
+  out.messagesSent = totals.sentMessages + impl.misaddressed;
+  out.messagesDelivered = totals.deliveredMessages;
+  out.messagesDropped = totals.droppedMessages + impl.misaddressed;
+  out.keyFrames = impl.keyFrameCount;
+  out.keyFramesDelivered = impl.exchange->deliveryCount();
+  out.started = impl.started;
+  out.startTime = impl.startTime;
+  out.missionTime = impl.started ? impl.now() - impl.startTime : 0.0;
+  out.budget = impl.budget;
+  out.simTime = impl.now();
+  out.wallTime = impl.wallTime;
+  out.stages = impl.stages;
+  return out;
+}
+
+std::string formatSummary(const MissionSummary& s) {
+  std::string out;
+  char line[512];
+  const auto add = [&](const char* format, auto... args) {
+    std::snprintf(line, sizeof line, format, args...);
+    out += line;
+  };
+  add("mission     %s, strategy %s, seed %llu, scoring %s\n", s.scenario.c_str(),
+      s.strategy.c_str(), static_cast<unsigned long long>(s.seed), s.scoring.c_str());
+  add("score       Q = %.2f\n", s.score);
+  add("detected    %zu / %zu interest points (%.1f %%)\n", s.detected, s.totalPoints,
+      s.totalPoints ? 100.0 * s.detected / s.totalPoints : 0.0);
+  add("collisions  %zu (deaths %zu)\n", s.collisions, s.deaths);
+  double distance = 0.0;
+  for (const auto& u : s.units)
+    distance += u.distanceFlown;
+  add("distance    %.1f m flown in total\n", distance);
+  for (const auto& u : s.units) {
+    if (u.role == "gcs") continue;
+    add("  %-10s %-12s %8.1f m, %5zu captures, own log %5zu points %9.2f%s%s\n", u.name.c_str(),
+        u.role.c_str(), u.distanceFlown, u.captures, u.detected, u.ownScore,
+        u.alive ? "" : ", dead: ", u.deathCause.c_str());
+  }
+  add("messages    sent %llu, delivered %llu, dropped %llu; key frames %llu, delivered %llu\n",
+      static_cast<unsigned long long>(s.messagesSent),
+      static_cast<unsigned long long>(s.messagesDelivered),
+      static_cast<unsigned long long>(s.messagesDropped),
+      static_cast<unsigned long long>(s.keyFrames),
+      static_cast<unsigned long long>(s.keyFramesDelivered));
+  add("commands    rejected %lld\n", s.rejectedCommands);
+  if (s.started)
+    add("clock       started at %.3f s, mission time %.2f s of %.0f s\n", s.startTime,
+        s.missionTime, s.budget);
+  else
+    add("clock       never started (no take-off)\n");
+  add("sim time    %.2f s\n", s.simTime);
+  add("wall time   %.2f s\n", s.wallTime);
+  add("real-time factor %.1fx\n", s.realTimeFactor());
+  const auto& t = s.stages;
+  add("stages      physics %.2f s, lidar %.2f s, topology %.2f s, scoring %.2f s, strategies "
+      "%.2f s, collisions %.2f s\n",
+      t.physics, t.lidar, t.topology, t.scoring, t.decisions, t.collisions);
+  return out;
+}
+
+}  // namespace coinspect::sim
