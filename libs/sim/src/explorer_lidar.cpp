@@ -11,7 +11,6 @@ struct ExplorerLidar::Impl {
   sensing::LidarSimulator simulator;
   sensing::KeyFrameSelector selector;
   sensing::LidarScan scan;
-  std::vector<sensing::SphereOccluder> occluders;
   std::string unit;
   Impl(const sensing::LidarSpec& spec, uint64_t seed, std::string name)
       : simulator(spec, seed), unit(std::move(name)) {}
@@ -32,19 +31,16 @@ size_t ExplorerLidar::keyFrameCount() const {
 
 agent::KeyFrameView ExplorerLidar::sweep(const world::RayCaster& caster, double time,
                                          const vehicle::VehicleState& body,
-                                         const std::vector<std::pair<world::Vec3, double>>& spheres,
+                                         const std::vector<sensing::SphereOccluder>& spheres,
                                          agent::LidarView& view) {
   auto& impl = *impl_;
-  impl.occluders.clear();
-  for (const auto& sphere : spheres)
-    impl.occluders.push_back({sphere.first, sphere.second});
   Eigen::Isometry3d bodyPose = Eigen::Isometry3d::Identity();
   bodyPose.linear() = (Eigen::AngleAxisd(body.yaw, Eigen::Vector3d::UnitZ()) *
                        Eigen::AngleAxisd(body.pitch, Eigen::Vector3d::UnitY()) *
                        Eigen::AngleAxisd(body.roll, Eigen::Vector3d::UnitX()))
                           .toRotationMatrix();
   bodyPose.translation() = body.position;
-  impl.simulator.sweepFromBody(caster, time, bodyPose, impl.scan, impl.occluders);
+  impl.simulator.sweepFromBody(caster, time, bodyPose, impl.scan, spheres);
 
   auto world = std::make_shared<std::vector<Eigen::Vector3f>>();
   world->reserve(impl.scan.points.size());

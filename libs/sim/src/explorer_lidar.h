@@ -4,11 +4,12 @@
 #pragma once
 
 #include <memory>
-#include <utility>
+#include <string>
 #include <vector>
 
 #include "coinspect/agent/observations.h"
 #include "coinspect/sensing/lidar_model.h"
+#include "coinspect/sensing/sphere_occluder.h"
 #include "coinspect/vehicle/vehicle_state.h"
 #include "coinspect/world/ray_caster.h"
 
@@ -22,11 +23,11 @@ class ExplorerLidar {
   ExplorerLidar& operator=(const ExplorerLidar&) = delete;
 
   double rate() const;
-  // Sweeps from the body state at `time`; other UAVs block rays as spheres (centre, radius).
+  // Sweeps from the body state at `time`; other UAVs block rays as spheres.
   // Fills `view` with the world-frame points; returns a new key frame when the scan became one.
   agent::KeyFrameView sweep(const world::RayCaster& caster, double time,
                             const vehicle::VehicleState& body,
-                            const std::vector<std::pair<world::Vec3, double>>& spheres,
+                            const std::vector<sensing::SphereOccluder>& spheres,
                             agent::LidarView& view);
   size_t keyFrameCount() const;
 

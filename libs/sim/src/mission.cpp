@@ -84,24 +84,29 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
     unit.spec = &scenario.fleet[i];
     unit.role = toAgentRole(unit.spec->role);
     unit.log = sensing::ScoreLog(pointCount);
+    unit.lastPosition = unit.spec->startPosition;
     if (unit.role == agent::Role::GroundStation) {
       if (!station) station = i;
-      unit.lastPosition = unit.spec->startPosition;
-      continue;
+      unit.ground = std::make_unique<vehicle::GroundVehicle>(unit.spec->startPosition,
+                                                             unit.spec->startYaw, config.gcsSpeed);
+    } else {
+      const auto& frame = unit.role == agent::Role::Explorer ? explorerFrame : photographerFrame;
+      unit.collisionRadius = frame.collisionRadius;
+      unit.vehicle = std::make_unique<vehicle::Multirotor>(frame, unit.spec->startPosition,
+                                                           unit.spec->startYaw, scenario.groundZ);
+      unit.gimbal = std::make_unique<sensing::Gimbal>(unit.spec->camera);
+      if (unit.role == agent::Role::Explorer && config.explorerLidar != "none") {
+        const auto& spec =
+            lookup(lidars, config.explorerLidar, config.source, "[mission] explorer_lidar");
+        unit.lidar =
+            std::make_unique<ExplorerLidar>(spec, seeds.fork(2000 + i).next(), unit.spec->name);
+        unit.lidarPeriod = ticksFor(1.0 / unit.lidar->rate(), step);
+      }
+      unit.capturePeriod = ticksFor(
+          sensing::capturePeriod(unit.spec->camera.triggerInterval, step, config.scoring), step);
+      unit.nextCapture = unit.capturePeriod;
     }
-    const auto& frame = unit.role == agent::Role::Explorer ? explorerFrame : photographerFrame;
-    unit.collisionRadius = frame.collisionRadius;
-    unit.vehicle = std::make_unique<vehicle::Multirotor>(frame, unit.spec->startPosition,
-                                                         unit.spec->startYaw, scenario.groundZ);
-    unit.gimbal = std::make_unique<sensing::Gimbal>(unit.spec->camera);
-    unit.lastPosition = unit.spec->startPosition;
-    if (unit.role == agent::Role::Explorer && config.explorerLidar != "none") {
-      const auto& spec =
-          lookup(lidars, config.explorerLidar, config.source, "[mission] explorer_lidar");
-      unit.lidar =
-          std::make_unique<ExplorerLidar>(spec, seeds.fork(2000 + i).next(), unit.spec->name);
-      unit.lidarPeriod = ticksFor(1.0 / unit.lidar->rate(), step);
-    }
+    // Ground stations get a strategy too: it drives a mobile one (gcs_speed > 0).
     const agent::StrategyContext context{
         ini, config.strategy, unit.spec->name, unit.role, i, seeds.fork(1000 + i).next()};
     unit.strategy = registry.create(config.strategy, context);
@@ -109,9 +114,6 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
     if (!(rate > 0.0) || !std::isfinite(rate))
       throw InputError(config.source, "[strategy] name", "strategy gives a non-positive rate");
     unit.decisionPeriod = ticksFor(1.0 / rate, step);
-    unit.capturePeriod = ticksFor(
-        sensing::capturePeriod(unit.spec->camera.triggerInterval, step, config.scoring), step);
-    unit.nextCapture = unit.capturePeriod;
   }
   // Faults and blackouts name units: check them now.
   for (const auto& fault : config.faults)
@@ -147,12 +149,29 @@ void Mission::Impl::event(const std::string& kind, const std::string& unit,
 void Mission::Impl::kill(size_t i, const std::string& cause) {
   auto& unit = units[i];
   if (!unit.alive()) return;
-  if (unit.vehicle)
+  if (unit.vehicle) {
     unit.vehicle->kill();
-  else
+    updateFallFloor(unit);
+  } else {
     unit.stationAlive = false;
+    unit.ground->setTarget(unit.ground->state().position);  // a dead station stops where it is
+  }
   unit.deathCause = cause;
   event("death", unit.spec->name, cause);
+}
+
+// The vehicle only knows a flat ground at scenario.groundZ, so a dead UAV above a roof or beside
+// a wall would fall through the mesh. Its floor is the first surface straight below it; it is
+// looked for again at every monitor tick because the UAV drifts sideways while it falls (off a
+// roof's edge, say). Between two looks the vehicle lands exactly on the floor it was given.
+void Mission::Impl::updateFallFloor(UnitRuntime& unit) {
+  auto& uav = *unit.vehicle;
+  if (uav.alive() || !uav.airborne()) return;
+  const world::Vec3& p = uav.state().position;
+  double floor = scenario.groundZ;
+  if (const auto hit = caster->closestHit(p, -world::Vec3::UnitZ()))
+    floor = std::max(floor, p.z() - hit->distance);
+  uav.setGroundZ(floor);
 }
 
 std::vector<bool> Mission::Impl::aliveFlags() const {
@@ -168,10 +187,12 @@ void Mission::Impl::syncVehicles() {
   if (dt <= 0.0) return;
   const auto stageStart = Clock::now();
   for (auto& unit : units) {
-    if (!unit.vehicle) continue;
-    const bool wasAlive = unit.vehicle->alive();
-    unit.vehicle->advance(dt);
-    const auto& p = unit.vehicle->state().position;
+    const bool wasAlive = unit.alive();
+    if (unit.vehicle)
+      unit.vehicle->advance(dt);
+    else
+      unit.ground->advance(dt);
+    const auto& p = unit.state().position;
     if (wasAlive) unit.distanceFlown += (p - unit.lastPosition).norm();
     unit.lastPosition = p;
   }
@@ -199,6 +220,8 @@ void Mission::Impl::applyFaultsAndBlackouts() {
 
 void Mission::Impl::monitor() {
   const auto stageStart = Clock::now();
+  for (auto& unit : units)
+    if (unit.vehicle) updateFallFloor(unit);
   // Collisions with surfaces (the ground is not one), then between UAVs.
   for (size_t i = 0; i < units.size(); ++i) {
     auto& unit = units[i];
@@ -281,7 +304,7 @@ void Mission::Impl::updateTopology() {
 }
 
 void Mission::Impl::sweepLidars() {
-  std::vector<std::pair<world::Vec3, double>> spheres;
+  std::vector<sensing::SphereOccluder> spheres;
   for (size_t i = 0; i < units.size(); ++i) {
     auto& unit = units[i];
     if (!unit.lidar || !unit.alive() || tick % unit.lidarPeriod != 0) continue;
@@ -289,7 +312,7 @@ void Mission::Impl::sweepLidars() {
     spheres.clear();
     for (size_t j = 0; j < units.size(); ++j)
       if (j != i && units[j].vehicle)
-        spheres.emplace_back(units[j].vehicle->state().position, units[j].collisionRadius);
+        spheres.push_back({units[j].vehicle->state().position, units[j].collisionRadius});
     auto keyFrame =
         unit.lidar->sweep(*caster, now(), unit.vehicle->state(), spheres, unit.lidarView);
     if (keyFrame) {
@@ -346,8 +369,7 @@ void Mission::Impl::hashStates() {
     }
   };
   for (const auto& unit : units) {
-    if (!unit.vehicle) continue;
-    const auto& s = unit.vehicle->state();
+    const auto& s = unit.state();
     for (int k = 0; k < 3; ++k) {
       mix(s.position[k]);
       mix(s.velocity[k]);
@@ -356,6 +378,7 @@ void Mission::Impl::hashStates() {
     mix(s.yaw);
     mix(s.pitch);
     mix(s.roll);
+    if (!unit.gimbal) continue;
     mix(unit.gimbal->pitch());
     mix(unit.gimbal->yaw());
   }
@@ -367,10 +390,12 @@ bool Mission::Impl::stepOnce() {
   const bool monitorTick = tick % monitorPeriod == 0;
   const bool topologyTick = tick % topologyPeriod == 0;
   bool needState = monitorTick || topologyTick || tick % controlPeriod == 0;
-  for (const auto& unit : units)
+  for (const auto& unit : units) {
+    needState = needState || tick % unit.decisionPeriod == 0;
     if (unit.vehicle)
-      needState = needState || tick >= unit.nextCapture || tick % unit.decisionPeriod == 0 ||
-                  (unit.lidar && tick % unit.lidarPeriod == 0);
+      needState =
+          needState || tick >= unit.nextCapture || (unit.lidar && tick % unit.lidarPeriod == 0);
+  }
 
   applyFaultsAndBlackouts();
   if (needState) syncVehicles();
@@ -388,7 +413,7 @@ bool Mission::Impl::stepOnce() {
     for (auto& unit : units)
       if (unit.gimbal) unit.gimbal->update(now());
   for (size_t i = 0; i < units.size(); ++i)
-    if (units[i].vehicle && units[i].alive() && tick % units[i].decisionPeriod == 0) decide(i);
+    if (units[i].alive() && tick % units[i].decisionPeriod == 0) decide(i);
 
   // The end: the budget on the mission clock is used up (motors stop), or nobody took off.
   const double t = now();
@@ -460,12 +485,7 @@ size_t Mission::unitIndex(const std::string& name) const {
 }
 
 vehicle::VehicleState Mission::unitState(size_t unit) const {
-  const auto& u = impl_->units.at(unit);
-  if (u.vehicle) return u.vehicle->state();
-  vehicle::VehicleState state;
-  state.position = u.spec->startPosition;
-  state.time = impl_->now();
-  return state;
+  return impl_->units.at(unit).state();
 }
 
 bool Mission::unitAlive(size_t unit) const {

@@ -1,5 +1,6 @@
 // What a strategy sees (only what its robot could know) and how its commands are applied.
 #include <chrono>
+#include <limits>
 
 #include "mission_impl.h"
 
@@ -32,15 +33,17 @@ agent::AgentView Mission::Impl::observe(size_t i) {
   view.started = started;
   view.missionTime = started ? now() - startTime : 0.0;
   view.timeLeft = budget - view.missionTime;
-  view.odometry = toOdometry(unit.vehicle->state());
-  const auto& camera = unit.spec->camera;
-  view.gimbal.pitch = unit.gimbal->pitch();
-  view.gimbal.yaw = unit.gimbal->yaw();
-  view.gimbal.pitchRate = unit.gimbal->pitchRate();
-  view.gimbal.yawRate = unit.gimbal->yawRate();
-  view.gimbal.pitchMax = camera.gimbalPitchMax;
-  view.gimbal.yawMax = camera.gimbalYawMax;
-  view.gimbal.rateMax = camera.gimbalRateMax;
+  view.odometry = toOdometry(unit.state());
+  if (unit.gimbal) {  // a ground station has none: its gimbal state stays zero
+    const auto& camera = unit.spec->camera;
+    view.gimbal.pitch = unit.gimbal->pitch();
+    view.gimbal.yaw = unit.gimbal->yaw();
+    view.gimbal.pitchRate = unit.gimbal->pitchRate();
+    view.gimbal.yawRate = unit.gimbal->yawRate();
+    view.gimbal.pitchMax = camera.gimbalPitchMax;
+    view.gimbal.yawMax = camera.gimbalYawMax;
+    view.gimbal.rateMax = camera.gimbalRateMax;
+  }
   view.lidar = unit.lidarView;
   view.ownKeyFrames = std::move(unit.pendingOwnKeyFrames);
   unit.pendingOwnKeyFrames.clear();
@@ -55,12 +58,7 @@ agent::AgentView Mission::Impl::observe(size_t i) {
     agent::NeighbourInfo neighbour;
     neighbour.name = other.spec->name;
     neighbour.role = other.role;
-    if (other.vehicle) {
-      neighbour.odometry = toOdometry(other.vehicle->state());
-    } else {
-      neighbour.odometry.time = now();
-      neighbour.odometry.position = other.spec->startPosition;
-    }
+    neighbour.odometry = toOdometry(other.state());
     view.neighbours.push_back(neighbour);
   }
   view.boxes = &boxes;
@@ -82,9 +80,17 @@ void Mission::Impl::decide(size_t i) {
     setpoint.velocity = command.setpoint->velocity;
     setpoint.acceleration = command.setpoint->acceleration;
     setpoint.yaw = command.setpoint->yaw;
-    unit.vehicle->command(setpoint, t);  // a non-finite one is rejected and counted there
+    // A non-finite setpoint is rejected and counted by the vehicle. A ground station drives
+    // toward the position's x, y only, but rejects the whole command as a UAV would (a NaN
+    // target makes it count the rejection).
+    if (unit.vehicle)
+      unit.vehicle->command(setpoint, t);
+    else
+      unit.ground->setTarget(vehicle::isFinite(setpoint)
+                                 ? setpoint.position
+                                 : world::Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
   }
-  if (command.gimbal) {
+  if (command.gimbal && unit.gimbal) {
     if (command.gimbal->mode == agent::GimbalCommand::Mode::Angles)
       unit.gimbal->commandAngles(command.gimbal->pitch, command.gimbal->yaw, t);
     else

@@ -66,6 +66,9 @@ MissionConfig MissionConfig::read(const Config& config, std::optional<uint64_t> 
     throw InputError(config.source(), "[mission] physics_step", "must be at most 0.01 s");
   out.startTimeout =
       positive(config, m, "start_timeout", config.getDouble(m, "start_timeout", out.startTimeout));
+  out.gcsSpeed = config.getDouble(m, "gcs_speed", out.gcsSpeed);
+  if (!(out.gcsSpeed >= 0.0) || !std::isfinite(out.gcsSpeed))
+    throw InputError(config.source(), "[mission] gcs_speed", "must be a finite speed >= 0 m/s");
   out.airframes = config.has(m, "airframes") ? config.getPath(m, "airframes")
                                              : defaultShareDir() / "airframes.ini";
   out.explorerAirframe = config.getString(m, "explorer_airframe", out.explorerAirframe);

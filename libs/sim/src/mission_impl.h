@@ -15,6 +15,7 @@
 #include "coinspect/sensing/inspection_scorer.h"
 #include "coinspect/sensing/score_log.h"
 #include "coinspect/sim/mission.h"
+#include "coinspect/vehicle/ground_vehicle.h"
 #include "coinspect/vehicle/multirotor.h"
 #include "coinspect/world/ray_caster.h"
 #include "explorer_lidar.h"
@@ -26,19 +27,20 @@ struct UnitRuntime {
   const world::UnitSpec* spec = nullptr;
   agent::Role role = agent::Role::Photographer;
   double collisionRadius = 0.0;
-  std::unique_ptr<vehicle::Multirotor> vehicle;  // null for the ground station
-  std::unique_ptr<sensing::Gimbal> gimbal;       // null for the ground station
-  std::unique_ptr<ExplorerLidar> lidar;          // explorers with a LiDAR
-  std::unique_ptr<agent::Strategy> strategy;     // UAVs only
-  long long decisionPeriod = 1;                  // ticks
-  long long lidarPeriod = 1;                     // ticks
-  long long capturePeriod = 1;                   // ticks
-  long long nextCapture = 0;                     // tick
+  std::unique_ptr<vehicle::Multirotor> vehicle;    // UAVs only (null for a ground station)
+  std::unique_ptr<vehicle::GroundVehicle> ground;  // ground stations only
+  std::unique_ptr<sensing::Gimbal> gimbal;         // null for a ground station
+  std::unique_ptr<ExplorerLidar> lidar;            // explorers with a LiDAR
+  std::unique_ptr<agent::Strategy> strategy;       // every unit
+  long long decisionPeriod = 1;                    // ticks
+  long long lidarPeriod = 1;                       // ticks
+  long long capturePeriod = 1;                     // ticks
+  long long nextCapture = 0;                       // tick
   sensing::ScoreLog log;
   double ownScore = 0.0;
-  bool stationAlive = true;  // the ground station (which has no vehicle)
+  bool stationAlive = true;  // a ground station (its vehicle cannot die by itself)
   std::string deathCause;
-  double distanceFlown = 0.0;
+  double distanceFlown = 0.0;  // driven, for a ground station
   world::Vec3 lastPosition = world::Vec3::Zero();
   size_t captures = 0;
   // Gathered between two decisions.
@@ -49,6 +51,9 @@ struct UnitRuntime {
 
   bool isUav() const { return vehicle != nullptr; }
   bool alive() const { return vehicle ? vehicle->alive() : stationAlive; }
+  const vehicle::VehicleState& state() const {
+    return vehicle ? vehicle->state() : ground->state();
+  }
 };
 
 struct Mission::Impl {
@@ -101,6 +106,7 @@ struct Mission::Impl {
   size_t unitIndexOf(const std::string& name, const std::string& where) const;
   void event(const std::string& kind, const std::string& unit, const std::string& detail);
   void kill(size_t unit, const std::string& cause);
+  void updateFallFloor(UnitRuntime& unit);
 
   bool stepOnce();
   void syncVehicles();

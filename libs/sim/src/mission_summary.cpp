@@ -26,7 +26,8 @@ MissionSummary Mission::summary() const {
     u.captures = unit.captures;
     u.detected = unit.log.detectedCount();
     u.ownScore = unit.ownScore;
-    u.rejectedCommands = unit.vehicle ? unit.vehicle->rejectedCommands() : 0;
+    u.rejectedCommands =
+        unit.vehicle ? unit.vehicle->rejectedCommands() : unit.ground->rejectedCommands();
     out.rejectedCommands += u.rejectedCommands;
     out.deaths += u.alive ? 0 : 1;
     out.units.push_back(u);
@@ -63,7 +64,7 @@ std::string formatSummary(const MissionSummary& s) {
   add("collisions  %zu (deaths %zu)\n", s.collisions, s.deaths);
   double distance = 0.0;
   for (const auto& u : s.units)
-    distance += u.distanceFlown;
+    if (u.role != "gcs") distance += u.distanceFlown;  // a ground station drives
   add("distance    %.1f m flown in total\n", distance);
   for (const auto& u : s.units) {
     if (u.role == "gcs") continue;

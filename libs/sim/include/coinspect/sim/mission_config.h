@@ -40,6 +40,7 @@ struct MissionConfig {
   double startSpeed = 0.1;          // m/s
   double physicsStep = 0.0025;      // s
   double startTimeout = 60.0;       // s without take-off before the run gives up
+  double gcsSpeed = 0.0;            // m/s, ground stations' top speed (0: static, CARIC)
   std::filesystem::path airframes;  // airframes.ini
   std::string explorerAirframe = "explorer";
   std::string photographerAirframe = "photographer";
