@@ -113,6 +113,8 @@ void DemoPaths::buildPath(const Vec3& start) {
 
 // Moves the reference point `speed * dt` along the path, unless the vehicle lags too far behind.
 void DemoPaths::advance(const Vec3& position, double dt) {
+  // A finished path (or one with a single point) has no segment to move along.
+  if (finished_ || path_.size() < 2) return;
   const Vec3 reference =
       path_[segment_] + along_ * (path_[segment_ + 1] - path_[segment_]).normalized();
   if ((position - reference).norm() > maxLag(options_->speed)) return;
