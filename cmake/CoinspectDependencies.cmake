@@ -20,3 +20,7 @@ endif()
 find_package(SUNDIALS REQUIRED)
 find_package(mrpt-obs REQUIRED)
 find_package(mrpt-maps REQUIRED)
+# Run recording (libs/record): gzip rawlog streams and the RTTI of the project observations.
+find_package(mrpt-io REQUIRED)
+find_package(mrpt-serialization REQUIRED)
+find_package(mrpt-rtti REQUIRED)

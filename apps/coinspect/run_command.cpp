@@ -1,8 +1,8 @@
 // `coinspect run <config.ini>`: flies a mission (doc/config.md, "Missions (coinspect run)") and
-// prints its summary; with --out, also writes summary.txt and events.csv there.
+// prints its summary; with --out, also writes summary.txt, events.csv, score.csv, report.json and
+// one <unit>.tum trajectory per unit there.
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
+#include <memory>
 #include <optional>
 
 #include "coinspect/core/config.h"
@@ -10,6 +10,7 @@
 #include "coinspect/sim/mission.h"
 #include "coinspect/strategies/builtin.h"
 #include "commands.h"
+#include "run_outputs.h"
 
 namespace coinspect::app {
 
@@ -21,16 +22,6 @@ struct RunOptions {
   std::optional<uint64_t> seed;
   std::string out;
 };
-
-void writeOutputs(const sim::Mission& mission, const std::string& summaryText,
-                  const std::filesystem::path& folder) {
-  std::filesystem::create_directories(folder);
-  std::ofstream(folder / "summary.txt") << summaryText;
-  std::ofstream events(folder / "events.csv");
-  events << "time,kind,unit,detail\n";
-  for (const auto& e : mission.events())
-    events << e.time << ',' << e.kind << ',' << e.unit << ",\"" << e.detail << "\"\n";
-}
 
 void runMission(const RunOptions& options) {
   auto ini = Config::fromFile(options.config);
@@ -44,11 +35,13 @@ void runMission(const RunOptions& options) {
               mission.scenario().name.c_str(), mission.scenario().fleet.size(),
               mission.scenario().interestPoints.size(), mission.summary().budget);
   std::fflush(stdout);
+  std::unique_ptr<RunOutputs> outputs;
+  if (!options.out.empty()) outputs = std::make_unique<RunOutputs>(mission, options.out);
   mission.run();
   const std::string text = sim::formatSummary(mission.summary());
   std::fputs(text.c_str(), stdout);
   if (!options.out.empty()) {
-    writeOutputs(mission, text, options.out);
+    outputs->finish(mission, ini, options.config, text);
     std::printf("outputs    %s\n", options.out.c_str());
   }
 }
@@ -61,7 +54,8 @@ void addRunCommand(CLI::App& root) {
   run->add_option("config", options->config, "mission INI file (see config/)")->required();
   run->add_option("--set", options->overrides, "override a key: section.key=value (repeatable)");
   run->add_option("--seed", options->seed, "run seed (replaces [mission] seed)");
-  run->add_option("--out", options->out, "folder for summary.txt and events.csv");
+  run->add_option("--out", options->out,
+                  "folder for summary.txt, events.csv, score.csv, report.json, <unit>.tum");
   run->callback([options] { runMission(*options); });
 }
 

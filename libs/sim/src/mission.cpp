@@ -399,7 +399,10 @@ bool Mission::Impl::stepOnce() {
 
   applyFaultsAndBlackouts();
   if (needState) syncVehicles();
-  if (tick % controlPeriod == 0) hashStates();
+  if (tick % controlPeriod == 0) {
+    hashStates();
+    if (controlTickObserver) controlTickObserver();
+  }
   if (monitorTick) monitor();
   if (topologyTick) updateTopology();
   sweepLidars();
@@ -494,6 +497,18 @@ bool Mission::unitAlive(size_t unit) const {
 
 double Mission::unitOwnScore(size_t unit) const {
   return impl_->units.at(unit).ownScore;
+}
+
+const std::vector<float>& Mission::gcsValues() const {
+  return impl_->tally.values();
+}
+
+void Mission::setControlTickObserver(ControlTickObserver observer) {
+  if (!observer) {
+    impl_->controlTickObserver = nullptr;
+    return;
+  }
+  impl_->controlTickObserver = [this, observer = std::move(observer)] { observer(*this); };
 }
 
 double Mission::gcsScore() const {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -94,6 +95,8 @@ struct Mission::Impl {
   double syncedTo = 0.0;
   std::vector<sensing::PointScore> scores;  // buffer
   sensing::Occluders occluders;             // buffer
+
+  std::function<void()> controlTickObserver;  // set through Mission::setControlTickObserver
 
   // Timing (wall clock, reported only).
   StageTimes stages;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -55,6 +56,14 @@ class Mission {
   bool unitAlive(size_t unit) const;
   double unitOwnScore(size_t unit) const;
   double gcsScore() const;
+  // The ground station's value per interest point (index order), for the score file.
+  const std::vector<float>& gcsValues() const;
+
+  // Called at every controller tick (every 0.05 s of simulated time, t = 0 included) after the
+  // vehicle states are brought up to that time and before any unit decides: the place to
+  // record poses. It must not change the mission; an empty function removes it.
+  using ControlTickObserver = std::function<void(const Mission&)>;
+  void setControlTickObserver(ControlTickObserver observer);
 
  private:
   struct Impl;

@@ -1,0 +1,89 @@
+#include "run_outputs.h"
+
+#include <fstream>
+
+#include "coinspect/record/run_report.h"
+#include "coinspect/record/score_csv.h"
+
+namespace coinspect::app {
+
+namespace {
+
+record::RunReport makeReport(const sim::MissionSummary& s, const Config& ini,
+                             const std::string& configFile) {
+  record::RunReport r;
+  r.configFile = configFile;
+  for (const auto& section : ini.sections())
+    for (const auto& key : ini.keys(section))
+      r.config[section][key] = ini.getString(section, key);
+  r.scenario = s.scenario;
+  r.strategy = s.strategy;
+  r.seed = s.seed;
+  r.scoring = s.scoring;
+  r.score = s.score;
+  r.detected = s.detected;
+  r.totalPoints = s.totalPoints;
+  for (const auto& u : s.units) {
+    record::RunReportUnit unit;
+    unit.name = u.name;
+    unit.role = u.role;
+    unit.alive = u.alive;
+    unit.deathCause = u.deathCause;
+    unit.distanceFlown = u.distanceFlown;
+    unit.captures = u.captures;
+    unit.detected = u.detected;
+    unit.ownScore = u.ownScore;
+    unit.rejectedCommands = u.rejectedCommands;
+    r.units.push_back(unit);
+  }
+  r.collisions = s.collisions;
+  r.deaths = s.deaths;
+  r.messagesSent = s.messagesSent;
+  r.messagesDelivered = s.messagesDelivered;
+  r.messagesDropped = s.messagesDropped;
+  r.keyFrames = s.keyFrames;
+  r.keyFramesDelivered = s.keyFramesDelivered;
+  r.started = s.started;
+  r.startTime = s.startTime;
+  r.missionTime = s.missionTime;
+  r.budget = s.budget;
+  r.simTime = s.simTime;
+  r.timing.wallTime = s.wallTime;
+  r.timing.realTimeFactor = s.realTimeFactor();
+  r.timing.stages = {{"physics", s.stages.physics}, {"decisions", s.stages.decisions},
+                     {"lidar", s.stages.lidar},     {"topology", s.stages.topology},
+                     {"scoring", s.stages.scoring}, {"collisions", s.stages.collisions}};
+  return r;
+}
+
+}  // namespace
+
+RunOutputs::RunOutputs(sim::Mission& mission, std::filesystem::path folder)
+    : folder_(std::move(folder)) {
+  std::filesystem::create_directories(folder_);
+  for (const auto& unit : mission.summary().units)
+    trajectories_.emplace_back(folder_ / (unit.name + ".tum"));
+  mission.setControlTickObserver([this](const sim::Mission& m) {
+    for (size_t i = 0; i < trajectories_.size(); ++i) {
+      const auto state = m.unitState(i);
+      trajectories_[i].append(m.time(), state.position, state.yaw, state.pitch, state.roll);
+    }
+  });
+}
+
+void RunOutputs::finish(const sim::Mission& mission, const Config& ini,
+                        const std::string& configFile, const std::string& summaryText) {
+  for (auto& trajectory : trajectories_)
+    trajectory.close();
+  std::ofstream(folder_ / "summary.txt") << summaryText;
+  std::ofstream events(folder_ / "events.csv");
+  events << "time,kind,unit,detail\n";
+  for (const auto& e : mission.events())
+    events << e.time << ',' << e.kind << ',' << e.unit << ",\"" << e.detail << "\"\n";
+  record::writeCaricScoreCsv(folder_ / "score.csv", mission.scenario().interestPoints,
+                             mission.gcsValues());
+  record::writeRunReportJson(folder_ / "report.json",
+                             makeReport(mission.summary(), ini, configFile));
+}
+
+}  // namespace coinspect::app

@@ -1,0 +1,62 @@
+// report.json: what a run was (config, seed) and what it gave (score, per-unit figures,
+// collisions, traffic), plus wall-clock timings kept apart under "timing" so that comparing
+// two reports of the same run can skip them.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace coinspect::record {
+
+struct RunReportUnit {
+  std::string name;
+  std::string role;
+  bool alive = true;
+  std::string deathCause;      // empty while alive
+  double distanceFlown = 0.0;  // m
+  uint64_t captures = 0;
+  uint64_t detected = 0;  // points in its own log
+  double ownScore = 0.0;
+  int64_t rejectedCommands = 0;
+};
+
+struct RunReportTiming {
+  double wallTime = 0.0;  // s
+  double realTimeFactor = 0.0;
+  std::map<std::string, double> stages;  // s per stage of the loop
+};
+
+struct RunReport {
+  // The resolved configuration (overrides applied), section -> key -> value, as written.
+  std::string configFile;
+  std::map<std::string, std::map<std::string, std::string>> config;
+  std::string scenario;
+  std::string strategy;
+  uint64_t seed = 0;
+  std::string scoring;
+  double score = 0.0;  // Q at the ground station
+  uint64_t detected = 0;
+  uint64_t totalPoints = 0;
+  std::vector<RunReportUnit> units;
+  uint64_t collisions = 0;
+  uint64_t deaths = 0;
+  uint64_t messagesSent = 0, messagesDelivered = 0, messagesDropped = 0;
+  uint64_t keyFrames = 0, keyFramesDelivered = 0;
+  bool started = false;
+  double startTime = 0.0;    // s of simulated time when the mission clock started
+  double missionTime = 0.0;  // s on the mission clock at the end
+  double budget = 0.0;       // s
+  double simTime = 0.0;      // s simulated in total
+  RunReportTiming timing;    // wall clock: differs between equal runs
+};
+
+// The report as JSON text: keys sorted at every level, two-space indent, numbers printed
+// shortest-exact, so equal reports give equal text.
+std::string runReportJson(const RunReport& report);
+// Writes runReportJson(report) to `path`; throws InputError if it cannot be written.
+void writeRunReportJson(const std::filesystem::path& path, const RunReport& report);
+
+}  // namespace coinspect::record

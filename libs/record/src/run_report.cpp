@@ -1,0 +1,70 @@
+#include "coinspect/record/run_report.h"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "coinspect/core/error.h"
+
+namespace coinspect::record {
+
+namespace {
+
+// nlohmann::json objects are std::map based: keys come out sorted, the text is deterministic.
+nlohmann::json unitJson(const RunReportUnit& unit) {
+  return {{"name", unit.name},
+          {"role", unit.role},
+          {"alive", unit.alive},
+          {"death_cause", unit.deathCause},
+          {"distance_flown", unit.distanceFlown},
+          {"captures", unit.captures},
+          {"detected", unit.detected},
+          {"own_score", unit.ownScore},
+          {"rejected_commands", unit.rejectedCommands}};
+}
+
+}  // namespace
+
+std::string runReportJson(const RunReport& report) {
+  nlohmann::json units = nlohmann::json::array();
+  for (const auto& unit : report.units)
+    units.push_back(unitJson(unit));
+  nlohmann::json json = {{"config", {{"file", report.configFile}, {"values", report.config}}},
+                         {"scenario", report.scenario},
+                         {"strategy", report.strategy},
+                         {"seed", report.seed},
+                         {"scoring", report.scoring},
+                         {"score", report.score},
+                         {"detected", report.detected},
+                         {"total_points", report.totalPoints},
+                         {"units", units},
+                         {"collisions", report.collisions},
+                         {"deaths", report.deaths},
+                         {"messages",
+                          {{"sent", report.messagesSent},
+                           {"delivered", report.messagesDelivered},
+                           {"dropped", report.messagesDropped},
+                           {"key_frames", report.keyFrames},
+                           {"key_frames_delivered", report.keyFramesDelivered}}},
+                         {"clock",
+                          {{"started", report.started},
+                           {"start_time", report.startTime},
+                           {"mission_time", report.missionTime},
+                           {"budget", report.budget},
+                           {"sim_time", report.simTime}}},
+                         {"timing",
+                          {{"wall_time", report.timing.wallTime},
+                           {"real_time_factor", report.timing.realTimeFactor},
+                           {"stages", report.timing.stages}}}};
+  return json.dump(2) + "\n";
+}
+
+void writeRunReportJson(const std::filesystem::path& path, const RunReport& report) {
+  const std::string text = runReportJson(report);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw InputError(path.string(), "open", "cannot write the file");
+  out << text;
+  out.flush();
+  if (!out) throw InputError(path.string(), "write", "writing the file failed");
+}
+
+}  // namespace coinspect::record

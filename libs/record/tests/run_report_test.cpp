@@ -1,0 +1,118 @@
+#include "coinspect/record/run_report.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "coinspect/testing/files.h"
+
+namespace coinspect::record {
+
+namespace {
+
+RunReport sampleReport() {
+  RunReport r;
+  r.configFile = "config/quick.ini";
+  r.config["mission"]["seed"] = "7";
+  r.config["strategy"]["name"] = "demo";
+  r.scenario = "slei-b";
+  r.strategy = "demo";
+  r.seed = 7;
+  r.scoring = "caric";
+  r.score = 12.5;
+  r.detected = 20;
+  r.totalPoints = 150;
+  RunReportUnit unit;
+  unit.name = "jurong";
+  unit.role = "explorer";
+  unit.alive = false;
+  unit.deathCause = "collision";
+  unit.distanceFlown = 42.25;
+  unit.captures = 100;
+  unit.detected = 15;
+  unit.ownScore = 9.5;
+  unit.rejectedCommands = 3;
+  r.units.push_back(unit);
+  r.collisions = 1;
+  r.deaths = 1;
+  r.messagesSent = 10;
+  r.messagesDelivered = 8;
+  r.messagesDropped = 2;
+  r.keyFrames = 5;
+  r.keyFramesDelivered = 4;
+  r.started = true;
+  r.startTime = 0.5;
+  r.missionTime = 19.5;
+  r.budget = 20;
+  r.simTime = 20;
+  r.timing.wallTime = 1.25;
+  r.timing.realTimeFactor = 16;
+  r.timing.stages["physics"] = 0.75;
+  return r;
+}
+
+}  // namespace
+
+TEST(RunReport, HasEveryField) {
+  const auto json = nlohmann::json::parse(runReportJson(sampleReport()));
+  EXPECT_EQ(json["config"]["file"], "config/quick.ini");
+  EXPECT_EQ(json["config"]["values"]["mission"]["seed"], "7");
+  EXPECT_EQ(json["scenario"], "slei-b");
+  EXPECT_EQ(json["strategy"], "demo");
+  EXPECT_EQ(json["seed"], 7);
+  EXPECT_EQ(json["scoring"], "caric");
+  EXPECT_EQ(json["score"], 12.5);
+  EXPECT_EQ(json["detected"], 20);
+  EXPECT_EQ(json["total_points"], 150);
+  ASSERT_EQ(json["units"].size(), 1u);
+  const auto& unit = json["units"][0];
+  EXPECT_EQ(unit["name"], "jurong");
+  EXPECT_EQ(unit["role"], "explorer");
+  EXPECT_EQ(unit["alive"], false);
+  EXPECT_EQ(unit["death_cause"], "collision");
+  EXPECT_EQ(unit["distance_flown"], 42.25);
+  EXPECT_EQ(unit["captures"], 100);
+  EXPECT_EQ(unit["detected"], 15);
+  EXPECT_EQ(unit["own_score"], 9.5);
+  EXPECT_EQ(unit["rejected_commands"], 3);
+  EXPECT_EQ(json["collisions"], 1);
+  EXPECT_EQ(json["deaths"], 1);
+  EXPECT_EQ(json["messages"]["sent"], 10);
+  EXPECT_EQ(json["messages"]["delivered"], 8);
+  EXPECT_EQ(json["messages"]["dropped"], 2);
+  EXPECT_EQ(json["messages"]["key_frames"], 5);
+  EXPECT_EQ(json["messages"]["key_frames_delivered"], 4);
+  EXPECT_EQ(json["clock"]["started"], true);
+  EXPECT_EQ(json["clock"]["start_time"], 0.5);
+  EXPECT_EQ(json["clock"]["mission_time"], 19.5);
+  EXPECT_EQ(json["clock"]["budget"], 20.0);
+  EXPECT_EQ(json["clock"]["sim_time"], 20.0);
+  EXPECT_EQ(json["timing"]["wall_time"], 1.25);
+  EXPECT_EQ(json["timing"]["real_time_factor"], 16.0);
+  EXPECT_EQ(json["timing"]["stages"]["physics"], 0.75);
+  EXPECT_EQ(json.size(), 14u);  // nothing else at the top level
+}
+
+TEST(RunReport, TextIsSortedAndEqualForEqualReports) {
+  const auto text = runReportJson(sampleReport());
+  EXPECT_EQ(text, runReportJson(sampleReport()));
+  // Sorted keys: "clock" comes before "collisions", "scenario" before "score".
+  EXPECT_LT(text.find("\"clock\""), text.find("\"collisions\""));
+  EXPECT_LT(text.find("\"scenario\""), text.find("\"score\""));
+  // Only the timing object differs between two runs of the same mission.
+  auto other = sampleReport();
+  other.timing.wallTime = 3.0;
+  auto a = nlohmann::json::parse(text), b = nlohmann::json::parse(runReportJson(other));
+  EXPECT_NE(a, b);
+  a.erase("timing");
+  b.erase("timing");
+  EXPECT_EQ(a, b);
+}
+
+TEST(RunReport, WritesTheFile) {
+  const auto path = std::filesystem::temp_directory_path() / "coinspect_run_report_test.json";
+  writeRunReportJson(path, sampleReport());
+  EXPECT_EQ(testing::readFile(path), runReportJson(sampleReport()));
+}
+
+}  // namespace coinspect::record
