@@ -15,6 +15,7 @@
 #include <memory>
 #include <vector>
 
+#include "bare_embree_scene.h"
 #include "coinspect/world/mesh_io.h"
 #include "coinspect/world/ray_caster.h"
 
@@ -28,43 +29,7 @@ constexpr double kRange = 100.0;
 constexpr double kSegmentLength = 60.0;
 constexpr double kPi = 3.14159265358979323846;
 
-struct BareScene {
-  RTCDevice device = nullptr;
-  RTCScene scene = nullptr;
-  BareScene(const TriangleMesh& mesh, double groundHalfExtent, bool robust) {
-    device = rtcNewDevice(nullptr);
-    scene = rtcNewScene(device);
-    if (robust) rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
-    add(mesh.vertices, mesh.triangles);
-    const auto box = mesh.bounds();
-    const Vec3 c = 0.5 * (box.min + box.max);
-    const float h = static_cast<float>(groundHalfExtent);
-    const float cx = static_cast<float>(c.x()), cy = static_cast<float>(c.y());
-    add({{cx - h, cy - h, 0}, {cx + h, cy - h, 0}, {cx + h, cy + h, 0}, {cx - h, cy + h, 0}},
-        {{0, 1, 2}, {0, 2, 3}});
-    rtcCommitScene(scene);
-  }
-  ~BareScene() {
-    rtcReleaseScene(scene);
-    rtcReleaseDevice(device);
-  }
-  BareScene(const BareScene&) = delete;
-  BareScene& operator=(const BareScene&) = delete;
-
-  void add(const std::vector<Eigen::Vector3f>& vertices,
-           const std::vector<std::array<uint32_t, 3>>& triangles) {
-    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices.size()));
-    auto* t = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-        g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), triangles.size()));
-    std::memcpy(v, vertices.data(), vertices.size() * 3 * sizeof(float));
-    std::memcpy(t, triangles.data(), triangles.size() * 3 * sizeof(uint32_t));
-    rtcCommitGeometry(g);
-    rtcAttachGeometry(scene, g);
-    rtcReleaseGeometry(g);
-  }
-};
+using BareScene = coinspect::bench::BareEmbreeScene;
 
 struct Setup {
   bool ok = false;

@@ -13,11 +13,20 @@ endif()
 set(COINSPECT_SHARED_DIR "${PROJECT_SOURCE_DIR}/../shared" CACHE PATH
     "Folder holding design/ and data/ (reference data, never copied into the repository)")
 
-# coinspect_add_library(<name> SOURCES ... [DEPS ...] [PRIVATE_DEPS ...] [TESTS ...])
+# coinspect_add_library(<name> [SOURCES ...] [DEPS ...] [PRIVATE_DEPS ...] [TESTS ...]
+#                       [TEST_DEPS ...])
 #   libs/<name>/include/coinspect/<name>/*.h are its public headers; it is exported as
-#   coinspect::<name>. Each file in TESTS becomes a gtest executable linked to the library.
+#   coinspect::<name>. Without SOURCES it builds src/*.cpp of its folder, without TESTS each
+#   tests/*_test.cpp becomes a gtest executable (test_<name>_<file>) linked to the library and to
+#   TEST_DEPS. Globbing lets each concept live in its own file without editing CMake.
 function(coinspect_add_library name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;PRIVATE_DEPS;TESTS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;PRIVATE_DEPS;TESTS;TEST_DEPS" ${ARGN})
+  if(NOT ARG_SOURCES)
+    file(GLOB ARG_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/src/*.cpp)
+  endif()
+  if(NOT ARG_TESTS)
+    file(GLOB ARG_TESTS CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/tests/*_test.cpp)
+  endif()
   add_library(coinspect_${name} ${ARG_SOURCES})
   add_library(coinspect::${name} ALIAS coinspect_${name})
   set_target_properties(coinspect_${name} PROPERTIES OUTPUT_NAME coinspect_${name}
@@ -29,7 +38,8 @@ function(coinspect_add_library name)
   if(COINSPECT_BUILD_TESTS)
     foreach(test_source IN LISTS ARG_TESTS)
       get_filename_component(test_name ${test_source} NAME_WE)
-      coinspect_add_test(${name}_${test_name} SOURCES ${test_source} DEPS coinspect::${name})
+      coinspect_add_test(${name}_${test_name} SOURCES ${test_source}
+                         DEPS coinspect::${name} ${ARG_TEST_DEPS})
     endforeach()
   endif()
 endfunction()
