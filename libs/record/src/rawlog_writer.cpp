@@ -16,6 +16,7 @@
 #include "coinspect/sensing/inspection_scorer.h"
 #include "coinspect/sensing/lidar.h"
 #include "coinspect/sensing/lidar_observation.h"
+#include "coinspect/sensing/sphere_occluder.h"
 #include "gzip_streams.h"
 
 namespace coinspect::record {
@@ -127,6 +128,7 @@ void RawlogWriter::writeGimbal(const std::string& unit, double time, double yaw,
 void RawlogWriter::writeCapture(const std::string& unit, double time,
                                 const Eigen::Isometry3d& cameraPose,
                                 const sensing::CaptureState& state,
+                                const std::vector<sensing::SphereOccluder>& occluders,
                                 const std::vector<sensing::PointScore>& scores) {
   CObservationCoinspectCapture capture;
   capture.sensorLabel = label(unit, "camera");
@@ -140,10 +142,17 @@ void RawlogWriter::writeCapture(const std::string& unit, double time,
   capture.gimbalPitch = state.gimbalPitch;
   capture.gimbalYawRate = state.gimbalYawRate;
   capture.gimbalPitchRate = state.gimbalPitchRate;
-  capture.points.reserve(scores.size());
   for (const auto& s : scores)
-    capture.points.push_back(ScoredPointRecord{s.index, s.seen, static_cast<uint8_t>(s.reason),
-                                               s.qBlur, s.qRes, s.score, s.counted});
+    if (s.seen)
+      capture.points.push_back(ScoredPointRecord{s.index, s.seen, static_cast<uint8_t>(s.reason),
+                                                 s.qBlur, s.qRes, s.score, s.counted});
+  capture.bodyPosition = {state.position.x(), state.position.y(), state.position.z()};
+  capture.bodyYaw = state.yaw;
+  capture.bodyPitch = state.pitch;
+  capture.bodyRoll = state.roll;
+  capture.occluders.reserve(occluders.size());
+  for (const auto& o : occluders)
+    capture.occluders.push_back({{o.center.x(), o.center.y(), o.center.z()}, o.radius});
   writeAt(capture, time);
 }
 

@@ -6,7 +6,9 @@
 #include <mrpt/rtti/CObject.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <algorithm>
 #include <sstream>
+#include <vector>
 
 #include "coinspect/record/observations.h"
 
@@ -66,9 +68,20 @@ TEST(Observations, CaptureRoundTrips) {
   o.gimbalYawRate = 0.05;
   o.gimbalPitchRate = -0.05;
   o.points = {{7, true, 0, 0.9, 0.8, 0.72, true}, {9, false, 3, 0.0, 0.0, 0.0, false}};
+  o.bodyPosition = {1.0, -2.0, 2.875};
+  o.bodyYaw = 0.125;
+  o.bodyPitch = -0.0625;
+  o.bodyRoll = 0.03125;
+  o.occluders = {{{4.0, 5.0, 6.0}, 0.5}, {{-1.0, 0.0, 2.0}, 0.25}};
   const auto c = roundTrip(o);
   ASSERT_TRUE(c);
   expectCommon(o, *c);
+  EXPECT_TRUE(c->hasBodyState);
+  EXPECT_EQ(c->bodyPosition, o.bodyPosition);
+  EXPECT_EQ(c->bodyYaw, 0.125);
+  EXPECT_EQ(c->bodyPitch, -0.0625);
+  EXPECT_EQ(c->bodyRoll, 0.03125);
+  EXPECT_EQ(c->occluders, o.occluders);
   EXPECT_EQ(c->cameraPose, o.cameraPose);
   EXPECT_EQ(c->linearVelocity, o.linearVelocity);
   EXPECT_EQ(c->angularVelocity, o.angularVelocity);
@@ -127,6 +140,39 @@ TEST(Observations, TallyRoundTrips) {
   EXPECT_EQ(c->detected, 2u);
   EXPECT_EQ(c->pointCount, 50u);
   EXPECT_EQ(c->totalScore, 1.125);
+}
+
+// A version 0 capture (written before the body state and occluders were added) still reads:
+// its bytes are a version 1 object without the appended fields and with version byte 0.
+TEST(Observations, CaptureVersion0StillReads) {
+  CObservationCoinspectCapture o;
+  setCommon(o, "sentosa.camera", 2.0);
+  o.gimbalPitch = -0.5;
+  o.points = {{3, true, 0, 1.0, 0.5, 0.5, true}};
+  mrpt::io::CMemoryStream buffer;
+  auto archive = mrpt::serialization::archiveFrom(buffer);
+  archive << o;
+  const auto* begin = static_cast<const uint8_t*>(buffer.getRawBufferData());
+  std::vector<uint8_t> bytes(begin, begin + buffer.getTotalBytesCount());
+  const std::string name = "coinspect::record::CObservationCoinspectCapture";
+  const auto at = std::search(bytes.begin(), bytes.end(), name.begin(), name.end());
+  ASSERT_NE(at, bytes.end());
+  const auto versionByte = at + static_cast<std::ptrdiff_t>(name.size());
+  ASSERT_EQ(*versionByte, 1);
+  *versionByte = 0;
+  // Version 1 appended 3 + 3 doubles and an occluder count before the end-of-object marker.
+  const size_t appended = 6 * sizeof(double) + sizeof(uint32_t);
+  bytes.erase(bytes.end() - 1 - static_cast<std::ptrdiff_t>(appended), bytes.end() - 1);
+  mrpt::io::CMemoryStream old;
+  old.assignMemoryNotOwn(bytes.data(), bytes.size());
+  auto oldArchive = mrpt::serialization::archiveFrom(old);
+  const auto c = std::dynamic_pointer_cast<CObservationCoinspectCapture>(oldArchive.ReadObject());
+  ASSERT_TRUE(c);
+  EXPECT_EQ(old.getPosition(), bytes.size());
+  EXPECT_FALSE(c->hasBodyState);
+  EXPECT_EQ(c->gimbalPitch, -0.5);
+  EXPECT_EQ(c->points, o.points);
+  EXPECT_TRUE(c->occluders.empty());
 }
 
 TEST(Observations, EmptyListsRoundTrip) {

@@ -109,10 +109,12 @@ TEST(Rawlog, SampleReadsBackInOrderWithEveryField) {
   EXPECT_EQ(capture->cameraPose, PoseRecord{});
   EXPECT_EQ(capture->linearVelocity, (std::array<double, 3>{0.0, -1.0, 0.0}));
   EXPECT_EQ(capture->gimbalYaw, 0.25);
-  const std::vector<ScoredPointRecord> points = {
-      {4, true, 0, 1.0, 0.5, 0.5, true},
-      {5, false, static_cast<uint8_t>(sensing::NotSeenReason::BehindCamera), 0, 0, 0, false}};
+  // Only the points the camera saw are kept.
+  const std::vector<ScoredPointRecord> points = {{4, true, 0, 1.0, 0.5, 0.5, true}};
   EXPECT_EQ(capture->points, points);
+  EXPECT_EQ(capture->bodyPosition, (std::array<double, 3>{1.0, 2.0, 3.0}));
+  EXPECT_EQ(capture->bodyYaw, 0.5);
+  EXPECT_EQ(capture->occluders, (std::vector<OccluderRecord>{{{4.0, 5.0, 6.0}, 0.5}}));
   const auto links = as<CObservationCoinspectLinks>(result.objects[11]);
   ASSERT_TRUE(links);
   EXPECT_EQ(links->changes, (std::vector<LinkChangeRecord>{{"jurong", "raffles", true}}));

@@ -53,7 +53,10 @@ inline void writeSampleRun(const std::filesystem::path& path, double flushPeriod
   sensing::PointScore hidden;
   hidden.index = 5;
   hidden.reason = sensing::NotSeenReason::BehindCamera;
-  writer.writeCapture("raffles", 0.05, Eigen::Isometry3d::Identity(), state, {seen, hidden});
+  state.position = {1.0, 2.0, 3.0};
+  state.yaw = 0.5;
+  writer.writeCapture("raffles", 0.05, Eigen::Isometry3d::Identity(), state,
+                      {{Eigen::Vector3d(4.0, 5.0, 6.0), 0.5}}, {seen, hidden});
   writer.writeLinkChanges(0.05, {{"jurong", "raffles", true}});
   writer.writeMessages(0.05, {{"jurong", "gcs", "map", 2048, true}});
   writer.writeEvent(0.05, MissionEventKind::Start, "", "sample");

@@ -1,5 +1,6 @@
-// Serialization of the project observation classes. Version 0 of every class is the layout
-// written here; a new layout gets a new version and a new case in serializeFrom.
+// Serialization of the project observation classes. Every class is at version 0 except the
+// capture (version 1, which appends fields to version 0). A new layout gets a new version, and
+// serializeFrom keeps reading the old ones.
 #include "coinspect/record/observations.h"
 
 #include <mrpt/core/exceptions.h>
@@ -100,7 +101,7 @@ void CObservationCoinspectGimbal::getDescriptionAsText(std::ostream& o) const {
 
 // --- Capture ------------------------------------------------------------------------------
 uint8_t CObservationCoinspectCapture::serializeGetVersion() const {
-  return 0;
+  return 1;
 }
 
 void CObservationCoinspectCapture::serializeTo(CArchive& out) const {
@@ -112,23 +113,37 @@ void CObservationCoinspectCapture::serializeTo(CArchive& out) const {
   writeVector(out, points, [&](const ScoredPointRecord& p) {
     out << p.index << p.seen << p.notSeenReason << p.qBlur << p.qRes << p.score << p.counted;
   });
+  // Version 1.
+  writeArray(out, bodyPosition);
+  out << bodyYaw << bodyPitch << bodyRoll;
+  writeVector(out, occluders, [&](const OccluderRecord& o) {
+    writeArray(out, o.center);
+    out << o.radius;
+  });
 }
 
 void CObservationCoinspectCapture::serializeFrom(CArchive& in, uint8_t version) {
-  switch (version) {
-    case 0:
-      readCommon(in, *this);
-      readPose(in, cameraPose);
-      readArray(in, linearVelocity);
-      readArray(in, angularVelocity);
-      in >> gimbalYaw >> gimbalPitch >> gimbalYawRate >> gimbalPitchRate;
-      readVector(in, points, [&](ScoredPointRecord& p) {
-        in >> p.index >> p.seen >> p.notSeenReason >> p.qBlur >> p.qRes >> p.score >> p.counted;
-      });
-      break;
-    default:
-      MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
-  }
+  if (version > 1) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+  // Version 1 appends fields to version 0's layout.
+  readCommon(in, *this);
+  readPose(in, cameraPose);
+  readArray(in, linearVelocity);
+  readArray(in, angularVelocity);
+  in >> gimbalYaw >> gimbalPitch >> gimbalYawRate >> gimbalPitchRate;
+  readVector(in, points, [&](ScoredPointRecord& p) {
+    in >> p.index >> p.seen >> p.notSeenReason >> p.qBlur >> p.qRes >> p.score >> p.counted;
+  });
+  hasBodyState = version >= 1;
+  bodyPosition = {0.0, 0.0, 0.0};
+  bodyYaw = bodyPitch = bodyRoll = 0.0;
+  occluders.clear();
+  if (version == 0) return;
+  readArray(in, bodyPosition);
+  in >> bodyYaw >> bodyPitch >> bodyRoll;
+  readVector(in, occluders, [&](OccluderRecord& o) {
+    readArray(in, o.center);
+    in >> o.radius;
+  });
 }
 
 void CObservationCoinspectCapture::getSensorPose(mrpt::poses::CPose3D& out) const {
@@ -150,6 +165,10 @@ void CObservationCoinspectCapture::getDescriptionAsText(std::ostream& o) const {
     << "gimbal yaw " << gimbalYaw << " pitch " << gimbalPitch << " rad, rates " << gimbalYawRate
     << " " << gimbalPitchRate << " rad/s\n"
     << points.size() << " scored points (index seen reason q_blur q_res score counted):\n";
+  if (hasBodyState)
+    o << "body position " << bodyPosition[0] << " " << bodyPosition[1] << " " << bodyPosition[2]
+      << " m, yaw " << bodyYaw << " pitch " << bodyPitch << " roll " << bodyRoll << " rad, "
+      << occluders.size() << " occluding UAVs\n";
   for (const auto& s : points)
     o << "  " << s.index << " " << s.seen << " " << int(s.notSeenReason) << " " << s.qBlur << " "
       << s.qRes << " " << s.score << " " << s.counted << "\n";

@@ -62,7 +62,19 @@ struct ScoredPointRecord {
   }
 };
 
+// Another UAV as the scorer saw it at a capture: a sphere that blocks the camera's rays.
+struct OccluderRecord {
+  std::array<double, 3> center{0.0, 0.0, 0.0};  // world frame, m
+  double radius = 0.0;                          // m
+  bool operator==(const OccluderRecord& o) const {
+    return center == o.center && radius == o.radius;
+  }
+};
+
 // One camera capture: where the camera was, how it moved, and the points it scored.
+// Version 1 adds the body state exactly as the scorer received it (position and Z-Y-X Euler
+// angles, bit for bit) and the occluding UAVs, so that `coinspect eval` can score the capture
+// again and reproduce the live score exactly. Version 0 files read with hasBodyState = false.
 class CObservationCoinspectCapture : public mrpt::obs::CObservation {
   DEFINE_SERIALIZABLE(CObservationCoinspectCapture, coinspect::record)
 
@@ -75,6 +87,13 @@ class CObservationCoinspectCapture : public mrpt::obs::CObservation {
   double gimbalYawRate = 0.0;
   double gimbalPitchRate = 0.0;
   std::vector<ScoredPointRecord> points;
+  // Version 1.
+  bool hasBodyState = true;                     // false when read from a version 0 object
+  std::array<double, 3> bodyPosition{0, 0, 0};  // body origin in the world, m
+  double bodyYaw = 0.0;                         // rad, R_WB = Rz(yaw) Ry(pitch) Rx(roll)
+  double bodyPitch = 0.0;
+  double bodyRoll = 0.0;
+  std::vector<OccluderRecord> occluders;
 
   void getSensorPose(mrpt::poses::CPose3D& out) const override;
   void setSensorPose(const mrpt::poses::CPose3D&) override {}

@@ -28,6 +28,7 @@ namespace coinspect::sensing {
 struct LidarScan;
 struct PointScore;
 struct CaptureState;
+struct SphereOccluder;
 }  // namespace coinspect::sensing
 
 namespace coinspect::record {
@@ -72,9 +73,12 @@ class RawlogWriter {
   void writeGimbal(const std::string& unit, double time, double yaw, double pitch, double yawRate,
                    double pitchRate);
   // "<unit>.camera" CObservationCoinspectCapture: cameraPose is the camera in the world; the
-  // velocities and gimbal state come from `state`; scores as the scorer returned them.
+  // body state, velocities and gimbal state come from `state`, the other UAVs from `occluders`
+  // (both exactly as the scorer received them); of `scores` (as the scorer returned them) only
+  // the points the camera saw are kept: eval scores the others again if it needs them.
   void writeCapture(const std::string& unit, double time, const Eigen::Isometry3d& cameraPose,
                     const sensing::CaptureState& state,
+                    const std::vector<sensing::SphereOccluder>& occluders,
                     const std::vector<sensing::PointScore>& scores);
   // "gcs.links" CObservationCoinspectLinks.
   void writeLinkChanges(double time, const std::vector<LinkChangeRecord>& changes);

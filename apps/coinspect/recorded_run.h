@@ -1,0 +1,29 @@
+// What `eval`, `render` and `replay` need before they read a rawlog's observations: its run
+// header, the mission config it was recorded with, and the scenario it was flown in.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "coinspect/core/config.h"
+#include "coinspect/record/run_header.h"
+#include "coinspect/sim/mission_config.h"
+#include "coinspect/world/scenario.h"
+
+namespace coinspect::app {
+
+struct RecordedRun {
+  std::filesystem::path rawlog;
+  record::RunHeader header;
+  sim::MissionConfig mission;  // the header's config, read as `coinspect run` read it
+  world::Scenario scenario;
+};
+
+// Reads the header of `rawlog` and builds its scenario: from `scenarioSource` (a SOURCE as in
+// loadScenarioSource, with the header config's scenario_seed) when it is not empty, else from the
+// header config's [mission] scenario. Throws InputError when the rawlog has no coinspect header,
+// when the scenario cannot be built (the message suggests --scenario), or when its content hash
+// differs from the one recorded.
+RecordedRun openRecordedRun(const std::filesystem::path& rawlog, const std::string& scenarioSource);
+
+}  // namespace coinspect::app
