@@ -5,7 +5,9 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -55,5 +57,43 @@ struct BareEmbreeScene {
     rtcReleaseGeometry(g);
   }
 };
+
+// The bare baseline loop of the ray benchmarks: rays [0, count) (origins and directions as 3
+// floats each) cast in packets of 16 with rtcIntersect16 from tnear 0 to `tfar`; out(ray, hit,
+// distance) is called for every ray, packet by packet.
+template <typename Out>
+void intersectPackets16(RTCScene scene, const float* origins, const float* directions, size_t count,
+                        float tfar, Out out) {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  alignas(64) RTCRayHit16 p;
+  alignas(64) int valid[16];
+  for (size_t start = 0; start < count; start += 16) {
+    const size_t n = std::min<size_t>(16, count - start);
+    for (size_t k = 0; k < 16; ++k) {
+      valid[k] = k < n ? -1 : 0;
+      if (k >= n) continue;
+      const float* o = &origins[3 * (start + k)];
+      const float* d = &directions[3 * (start + k)];
+      p.ray.org_x[k] = o[0];
+      p.ray.org_y[k] = o[1];
+      p.ray.org_z[k] = o[2];
+      p.ray.dir_x[k] = d[0];
+      p.ray.dir_y[k] = d[1];
+      p.ray.dir_z[k] = d[2];
+      p.ray.tnear[k] = 0.0f;
+      p.ray.tfar[k] = tfar;
+      p.ray.time[k] = 0.0f;
+      p.ray.mask[k] = 0xffffffffu;
+      p.ray.id[k] = static_cast<unsigned>(k);
+      p.ray.flags[k] = 0;
+      p.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+      p.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect16(valid, scene, &context, &p);
+    for (size_t k = 0; k < n; ++k)
+      out(start + k, p.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID, p.ray.tfar[k]);
+  }
+}
 
 }  // namespace coinspect::bench

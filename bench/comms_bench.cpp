@@ -8,14 +8,12 @@
 // the mean share of linked pairs.
 #include <benchmark/benchmark.h>
 
-#include <filesystem>
 #include <memory>
 #include <vector>
 
+#include "caric_mbs_fixture.h"
 #include "coinspect/comms/link_model.h"
 #include "coinspect/core/random.h"
-#include "coinspect/world/caric_scenario.h"
-#include "coinspect/world/ray_caster.h"
 
 namespace {
 
@@ -24,25 +22,7 @@ using world::Vec3;
 
 constexpr int kLayouts = 16;
 
-struct MbsFixture {
-  world::Scenario scenario;
-  std::unique_ptr<world::RayCaster> caster;
-};
-
-const MbsFixture* fixture() {
-  static const std::unique_ptr<MbsFixture> instance = []() -> std::unique_ptr<MbsFixture> {
-    const std::filesystem::path dir =
-        std::filesystem::path(COINSPECT_SHARED_DIR) / "data" / "caric-mbs";
-    if (!std::filesystem::exists(dir / "mbs.stl")) return nullptr;
-    auto f = std::make_unique<MbsFixture>();
-    f->scenario = world::importCaricScenario(dir);
-    f->caster = std::make_unique<world::RayCaster>(f->scenario.meshes, f->scenario.groundZ);
-    return f;
-  }();
-  return instance.get();
-}
-
-std::vector<std::vector<comms::LinkEndpoint>> layouts(const MbsFixture& f, int units) {
+std::vector<std::vector<comms::LinkEndpoint>> layouts(const bench::CaricMbs& f, int units) {
   const world::Aabb box = f.scenario.bounds();
   Rng rng(7700 + static_cast<uint64_t>(units));
   std::vector<std::vector<comms::LinkEndpoint>> result(kLayouts);
@@ -71,7 +51,7 @@ void reportRates(benchmark::State& state, size_t linked, int units) {
 }
 
 void topologyUpdate(benchmark::State& state, const comms::LinkModel& model) {
-  const MbsFixture* f = fixture();
+  const bench::CaricMbs* f = bench::caricMbs();
   if (f == nullptr) {
     state.SkipWithError("CARIC MBS data not found under COINSPECT_SHARED_DIR");
     return;
@@ -97,7 +77,7 @@ void BM_RangeTopology(benchmark::State& state) {
 // The reference's loop for comparison: pair by pair, antenna pair by antenna pair, one ray each,
 // stopping at the first clear segment.
 void BM_CaricTopologyPerPairLoop(benchmark::State& state) {
-  const MbsFixture* f = fixture();
+  const bench::CaricMbs* f = bench::caricMbs();
   if (f == nullptr) {
     state.SkipWithError("CARIC MBS data not found under COINSPECT_SHARED_DIR");
     return;

@@ -127,41 +127,12 @@ void BM_BareEmbreeSweep(benchmark::State& state) {
   std::vector<float> ranges(s.rays());
   size_t returns = 0;
   for (auto _ : state) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    alignas(64) RTCRayHit16 p;
-    alignas(64) int valid[16];
-    for (size_t start = 0; start < s.rays(); start += 16) {
-      const size_t n = std::min<size_t>(16, s.rays() - start);
-      for (size_t k = 0; k < 16; ++k) {
-        valid[k] = k < n ? -1 : 0;
-        if (k >= n) continue;
-        const float* o = &s.o[3 * (start + k)];
-        const float* d = &s.d[3 * (start + k)];
-        p.ray.org_x[k] = o[0];
-        p.ray.org_y[k] = o[1];
-        p.ray.org_z[k] = o[2];
-        p.ray.dir_x[k] = d[0];
-        p.ray.dir_y[k] = d[1];
-        p.ray.dir_z[k] = d[2];
-        p.ray.tnear[k] = 0.0f;
-        p.ray.tfar[k] = maxRange;
-        p.ray.time[k] = 0.0f;
-        p.ray.mask[k] = 0xffffffffu;
-        p.ray.id[k] = static_cast<unsigned>(k);
-        p.ray.flags[k] = 0;
-        p.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
-        p.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
-      }
-      rtcIntersect16(valid, s.bare->scene, &context, &p);
-      for (size_t k = 0; k < n; ++k) {
-        const bool hit = p.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID;
-        const float r = p.ray.tfar[k];
-        const bool kept = hit && minRange < r && r < maxRange;
-        ranges[start + k] = kept ? r : INFINITY;
-        returns += kept ? 1 : 0;
-      }
-    }
+    coinspect::bench::intersectPackets16(s.bare->scene, s.o.data(), s.d.data(), s.rays(), maxRange,
+                                         [&](size_t ray, bool hit, float r) {
+                                           const bool kept = hit && minRange < r && r < maxRange;
+                                           ranges[ray] = kept ? r : INFINITY;
+                                           returns += kept ? 1 : 0;
+                                         });
     benchmark::DoNotOptimize(ranges.data());
   }
   finish(state, returns);

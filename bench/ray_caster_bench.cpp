@@ -182,37 +182,9 @@ void BM_BareIntersect16(benchmark::State& state) {
   const RTCScene scene = state.range(0) ? s.bareRobust->scene : s.bareFast->scene;
   std::vector<float> distances(s.size());
   for (auto _ : state) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    alignas(64) RTCRayHit16 p;
-    alignas(64) int valid[16];
-    for (size_t start = 0; start < s.size(); start += 16) {
-      const size_t n = std::min<size_t>(16, s.size() - start);
-      for (size_t k = 0; k < 16; ++k) {
-        valid[k] = k < n ? -1 : 0;
-        if (k >= n) continue;
-        const float* o = &s.o[3 * (start + k)];
-        const float* d = &s.d[3 * (start + k)];
-        p.ray.org_x[k] = o[0];
-        p.ray.org_y[k] = o[1];
-        p.ray.org_z[k] = o[2];
-        p.ray.dir_x[k] = d[0];
-        p.ray.dir_y[k] = d[1];
-        p.ray.dir_z[k] = d[2];
-        p.ray.tnear[k] = 0.0f;
-        p.ray.tfar[k] = static_cast<float>(kRange);
-        p.ray.time[k] = 0.0f;
-        p.ray.mask[k] = 0xffffffffu;
-        p.ray.id[k] = static_cast<unsigned>(k);
-        p.ray.flags[k] = 0;
-        p.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
-        p.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
-      }
-      rtcIntersect16(valid, scene, &context, &p);
-      for (size_t k = 0; k < n; ++k)
-        distances[start + k] =
-            p.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID ? p.ray.tfar[k] : INFINITY;
-    }
+    coinspect::bench::intersectPackets16(
+        scene, s.o.data(), s.d.data(), s.size(), static_cast<float>(kRange),
+        [&](size_t ray, bool hit, float r) { distances[ray] = hit ? r : INFINITY; });
     benchmark::DoNotOptimize(distances.data());
   }
   finish(state, s.size());

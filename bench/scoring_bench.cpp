@@ -6,21 +6,19 @@
 // points/s, mean candidates per capture and the fraction seen.
 #include <benchmark/benchmark.h>
 
-#include <filesystem>
 #include <memory>
 #include <vector>
 
+#include "caric_mbs_fixture.h"
 #include "coinspect/sensing/inspection_scorer.h"
-#include "coinspect/world/caric_scenario.h"
-#include "coinspect/world/ray_caster.h"
 
 namespace {
 
 using namespace coinspect;
 
 struct MbsFixture {
-  world::Scenario scenario;
-  std::unique_ptr<world::RayCaster> caster;
+  const world::Scenario& scenario;
+  const world::RayCaster* caster;
   world::CameraSpec spec;
   std::vector<sensing::CaptureState> poses;
 };
@@ -28,12 +26,9 @@ struct MbsFixture {
 // Built once; null when the shared data is absent.
 const MbsFixture* fixture() {
   static const std::unique_ptr<MbsFixture> instance = []() -> std::unique_ptr<MbsFixture> {
-    const std::filesystem::path dir =
-        std::filesystem::path(COINSPECT_SHARED_DIR) / "data" / "caric-mbs";
-    if (!std::filesystem::exists(dir / "mbs.stl")) return nullptr;
-    auto f = std::make_unique<MbsFixture>();
-    f->scenario = world::importCaricScenario(dir);
-    f->caster = std::make_unique<world::RayCaster>(f->scenario.meshes, f->scenario.groundZ);
+    const bench::CaricMbs* mbs = bench::caricMbs();
+    if (mbs == nullptr) return nullptr;
+    auto f = std::make_unique<MbsFixture>(MbsFixture{mbs->scenario, mbs->caster.get(), {}, {}});
     for (const world::UnitSpec& unit : f->scenario.fleet) {
       if (unit.role == world::UnitRole::Photographer) {
         f->spec = unit.camera;
