@@ -24,3 +24,5 @@ find_package(mrpt-maps REQUIRED)
 find_package(mrpt-io REQUIRED)
 find_package(mrpt-serialization REQUIRED)
 find_package(mrpt-rtti REQUIRED)
+# Pictures of recorded runs (libs/eval): MRPT's scenes and its headless EGL renderer CFBORender.
+find_package(mrpt-opengl REQUIRED)

@@ -14,10 +14,15 @@ int main(int argc, char** argv) {
   coinspect::app::addScoreCommand(app);
   coinspect::app::addDemoCommand(app);
   coinspect::app::addRunCommand(app);
+  coinspect::app::addEvalCommand(app);
+  coinspect::app::addRenderCommand(app);
+  coinspect::app::addReplayCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
     return app.exit(error);
+  } catch (const coinspect::app::CommandStatus& done) {
+    return done.status;
   } catch (const coinspect::InputError& error) {
     std::fprintf(stderr, "coinspect: error: %s\n", error.what());
     return 2;

@@ -1,6 +1,7 @@
 // `coinspect run <config.ini>`: flies a mission (doc/config.md, "Missions (coinspect run)") and
-// prints its summary; with --out, also writes summary.txt, events.csv, score.csv, report.json and
-// one <unit>.tum trajectory per unit there.
+// prints its summary; with --out, also records run.rawlog and writes summary.txt, events.csv,
+// score.csv, report.json and one <unit>.tum trajectory per unit there.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -10,6 +11,7 @@
 #include "coinspect/sim/mission.h"
 #include "coinspect/strategies/builtin.h"
 #include "commands.h"
+#include "progress.h"
 #include "run_outputs.h"
 
 namespace coinspect::app {
@@ -21,7 +23,38 @@ struct RunOptions {
   std::vector<std::string> overrides;
   std::optional<uint64_t> seed;
   std::string out;
+  bool quiet = false;
 };
+
+// Flies the mission in steps of 1 s of simulated time, drawing the progress line (stdout, like
+// the rest of the run's output) after each; it also stops at every 10 % of the total, so that
+// the plain lines of a pipe fall on those instants. Until take-off the total is the budget; then
+// it is the mission's end, take-off time + budget.
+void flyWithProgress(sim::Mission& mission) {
+  const double budget = mission.summary().budget;
+  double total = budget;
+  ProgressLine progress(stdout, "progress", total);
+  bool totalKnown = false;
+  double nextSecond = 1.0;
+  int nextTenth = 1;
+  while (!mission.finished()) {
+    const double tenthAt = total * nextTenth / 10.0;
+    mission.runUntil(std::min(nextSecond, tenthAt));
+    const auto summary = mission.summary();
+    if (!totalKnown && summary.started) {
+      total = summary.startTime + budget;
+      progress.setTotal(total);
+      totalKnown = true;
+    }
+    // runUntil stops at the first tick at or after its time.
+    while (nextSecond <= summary.simTime + 1e-9)
+      nextSecond += 1.0;
+    while (nextTenth <= 10 && total * nextTenth / 10.0 <= summary.simTime + 1e-9)
+      ++nextTenth;
+    progress.update(summary.simTime, summary.score, summary.detected, summary.totalPoints);
+  }
+  progress.finish();
+}
 
 void runMission(const RunOptions& options) {
   auto ini = Config::fromFile(options.config);
@@ -36,14 +69,22 @@ void runMission(const RunOptions& options) {
               mission.scenario().interestPoints.size(), mission.summary().budget);
   std::fflush(stdout);
   std::unique_ptr<RunOutputs> outputs;
-  if (!options.out.empty()) outputs = std::make_unique<RunOutputs>(mission, options.out);
-  mission.run();
+  if (!options.out.empty()) outputs = std::make_unique<RunOutputs>(mission, options.out, ini);
+  if (options.quiet)
+    mission.run();
+  else
+    flyWithProgress(mission);
   const std::string text = sim::formatSummary(mission.summary());
   std::fputs(text.c_str(), stdout);
   if (!options.out.empty()) {
     outputs->finish(mission, ini, options.config, text);
     std::printf("outputs    %s\n", options.out.c_str());
+    if (const auto rawlog = mission.recordingPath())
+      std::printf("rawlog     %s\n", rawlog->string().c_str());
   }
+  // A failed recording stopped the mission early; the other outputs are written, the run fails.
+  if (const auto& error = mission.recordingError())
+    throw InputError(*error, "", "recording failed, the mission was stopped there");
 }
 
 }  // namespace
@@ -55,7 +96,9 @@ void addRunCommand(CLI::App& root) {
   run->add_option("--set", options->overrides, "override a key: section.key=value (repeatable)");
   run->add_option("--seed", options->seed, "run seed (replaces [mission] seed)");
   run->add_option("--out", options->out,
-                  "folder for summary.txt, events.csv, score.csv, report.json, <unit>.tum");
+                  "folder for run.rawlog, summary.txt, events.csv, score.csv, report.json, "
+                  "<unit>.tum");
+  run->add_flag("--quiet", options->quiet, "no progress line while the mission flies");
   run->callback([options] { runMission(*options); });
 }
 

@@ -1,7 +1,12 @@
 #include "run_outputs.h"
 
+#include <cinttypes>
+#include <cstdio>
 #include <fstream>
+#include <system_error>
 
+#include "coinspect/core/error.h"
+#include "coinspect/core/version.h"
 #include "coinspect/record/run_report.h"
 #include "coinspect/record/score_csv.h"
 
@@ -48,19 +53,39 @@ record::RunReport makeReport(const sim::MissionSummary& s, const Config& ini,
   r.missionTime = s.missionTime;
   r.budget = s.budget;
   r.simTime = s.simTime;
+  r.runMode = s.runMode;
+  r.realtimeFactor = s.requestedRealtimeFactor;
+  r.timing.decisions = s.decisionTimes.count;
+  r.timing.decisionTimeMean = s.decisionTimes.mean();
+  r.timing.decisionTimeMax = s.decisionTimes.max;
   r.timing.wallTime = s.wallTime;
   r.timing.realTimeFactor = s.realTimeFactor();
   r.timing.stages = {{"physics", s.stages.physics}, {"decisions", s.stages.decisions},
                      {"lidar", s.stages.lidar},     {"topology", s.stages.topology},
-                     {"scoring", s.stages.scoring}, {"collisions", s.stages.collisions}};
+                     {"scoring", s.stages.scoring}, {"collisions", s.stages.collisions},
+                     {"pacing", s.stages.pacing}};
   return r;
 }
 
 }  // namespace
 
-RunOutputs::RunOutputs(sim::Mission& mission, std::filesystem::path folder)
+record::RunHeader makeRunHeader(const sim::Mission& mission, const Config& ini) {
+  record::RunHeader header;
+  header.coinspectVersion = coinspect::version();
+  header.seed = mission.config().seed;
+  char hash[17];
+  std::snprintf(hash, sizeof hash, "%016" PRIx64, mission.scenario().contentHash());
+  header.scenarioHash = hash;
+  header.configIni = ini.toText();
+  return header;
+}
+
+RunOutputs::RunOutputs(sim::Mission& mission, std::filesystem::path folder, const Config& ini)
     : folder_(std::move(folder)) {
-  std::filesystem::create_directories(folder_);
+  std::error_code error;
+  std::filesystem::create_directories(folder_, error);
+  if (error)
+    throw InputError(folder_.string(), "--out", "cannot create the folder: " + error.message());
   for (const auto& unit : mission.summary().units)
     trajectories_.emplace_back(folder_ / (unit.name + ".tum"));
   mission.setControlTickObserver([this](const sim::Mission& m) {
@@ -69,6 +94,8 @@ RunOutputs::RunOutputs(sim::Mission& mission, std::filesystem::path folder)
       trajectories_[i].append(m.time(), state.position, state.yaw, state.pitch, state.roll);
     }
   });
+  if (mission.config().record.rawlog)
+    mission.startRecording(folder_ / "run.rawlog", makeRunHeader(mission, ini));
 }
 
 void RunOutputs::finish(const sim::Mission& mission, const Config& ini,

@@ -4,6 +4,7 @@ set -euo pipefail
 coinspect="$1"
 datasets="$2"
 for folder in "$datasets"/*/; do
+  [[ -f "$folder/scenario.ini" ]] || continue  # runs/ holds recorded missions, not a scenario
   name=$(basename "$folder")
   stored=$("$coinspect" scenario info "$folder" | sed -n 's/^content hash: //p')
   generated=$("$coinspect" scenario info "$name" --seed 1 | sed -n 's/^content hash: //p')

@@ -76,6 +76,7 @@ bool Network::send(Message message) {
   const bool up = alive_[message.from] != 0 && alive_[message.to] != 0 &&
                   links_.linked(message.from, message.to);
   const bool delivered = up && withinBudget(link, bytes, message.sentTime);
+  if (sendObserver_) sendObserver_(message, delivered);
   if (!delivered) {
     counters.droppedMessages += 1;
     counters.droppedBytes += bytes;

@@ -1,6 +1,10 @@
 // The message network: single-hop delivery only over live links, drop accounting, bandwidth cap.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <tuple>
+#include <vector>
+
 #include "coinspect/comms/network.h"
 #include "coinspect/testing/input_errors.h"
 #include "coinspect/world/ray_caster.h"
@@ -115,6 +119,22 @@ TEST(Network, BroadcastReachesCurrentNeighboursOnly) {
   EXPECT_EQ(at2[0].payload, (std::vector<uint8_t>{1, 2, 3}));
   EXPECT_EQ(net.takeInbox(1).size(), 1u);
   EXPECT_EQ(net.counters(0, 2).sentMessages, 0u);  // no attempt towards a non-neighbour
+}
+
+// The recorder's view of traffic: every send, broadcast copies included, with its fate.
+TEST(Network, SendObserverSeesEveryMessageAndItsFate) {
+  Network net(3);
+  net.setTopology(chain(), {true, true, true}, 2.0);
+  std::vector<std::tuple<uint32_t, uint32_t, std::string, size_t, bool>> seen;
+  net.setSendObserver([&](const Message& m, bool delivered) {
+    seen.emplace_back(m.from, m.to, m.topic, m.sizeBytes(), delivered);
+  });
+  net.send(message(0, 1, 10, 2.0, "a"));
+  net.send(message(0, 2, 5, 2.0, "b"));  // no link: dropped
+  net.broadcast(1, "c", {7});
+  const decltype(seen) expected = {
+      {0, 1, "a", 42, true}, {0, 2, "b", 37, false}, {1, 0, "c", 33, true}, {1, 2, "c", 33, true}};
+  EXPECT_EQ(seen, expected);
 }
 
 TEST(Network, BandwidthCapDropsWhatExceedsTheTokenBucket) {

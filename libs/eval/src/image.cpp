@@ -56,7 +56,7 @@ void putChunk(std::vector<uint8_t>& out, const char type[4], const std::vector<u
 
 }  // namespace
 
-std::vector<uint8_t> encodePng(const RgbImage& image) {
+std::vector<uint8_t> encodePng(const RgbImage& image, int compressionLevel) {
   // Each scanline is prefixed by its filter type (0: none).
   std::vector<uint8_t> raw;
   raw.reserve(static_cast<size_t>(image.height()) * (1 + 3 * image.width()));
@@ -70,7 +70,7 @@ std::vector<uint8_t> encodePng(const RgbImage& image) {
   uLongf compressedSize = compressBound(static_cast<uLong>(raw.size()));
   std::vector<uint8_t> compressed(compressedSize);
   const int status = compress2(compressed.data(), &compressedSize, raw.data(),
-                               static_cast<uLong>(raw.size()), Z_BEST_COMPRESSION);
+                               static_cast<uLong>(raw.size()), compressionLevel);
   COINSPECT_ASSERT(status == Z_OK);
   compressed.resize(compressedSize);
 
@@ -85,8 +85,8 @@ std::vector<uint8_t> encodePng(const RgbImage& image) {
   return png;
 }
 
-void writePng(const RgbImage& image, const std::filesystem::path& path) {
-  const auto bytes = encodePng(image);
+void writePng(const RgbImage& image, const std::filesystem::path& path, int compressionLevel) {
+  const auto bytes = encodePng(image, compressionLevel);
   std::ofstream out(path, std::ios::binary);
   out.write(reinterpret_cast<const char*>(bytes.data()),
             static_cast<std::streamsize>(bytes.size()));

@@ -12,13 +12,29 @@ GzipOutput::GzipOutput(const std::string& path, int level) {
   const std::string mode = "wb" + std::to_string(level);
   errno = 0;
   file_ = gzopen(path.c_str(), mode.c_str());
-  if (file_ == nullptr)
+  if (file_ == nullptr) {
     error_ = std::string("cannot create the file: ") +
              (errno != 0 ? std::strerror(errno) : "zlib could not open it");
+    failed_ = true;
+    return;
+  }
+  gzbuffer(file_, 256 * 1024);  // fewer, larger write() calls
+  pending_.reserve(kChunkBytes);
+  worker_ = std::thread([this] { work(); });
 }
 
 GzipOutput::~GzipOutput() {
+  stopWorker();
   if (file_ != nullptr) gzclose(file_);
+}
+
+bool GzipOutput::failed() const {
+  return failed_.load(std::memory_order_acquire);
+}
+
+std::string GzipOutput::error() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return error_;
 }
 
 void GzipOutput::fail(const char* what) {
@@ -28,18 +44,68 @@ void GzipOutput::fail(const char* what) {
   // zlib reports failed write() calls as Z_ERRNO: errno holds the reason (e.g. no space left).
   error_ = std::string(what) + ": " +
            (zlibError == Z_ERRNO ? std::strerror(errno) : std::string(zlibMessage));
+  failed_.store(true, std::memory_order_release);
+}
+
+void GzipOutput::work() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  for (;;) {
+    queued_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
+    if (queue_.empty()) return;  // stopping, nothing left
+    Chunk chunk = std::move(queue_.front());
+    queue_.pop_front();
+    busy_ = true;
+    const bool skip = !error_.empty();
+    lock.unlock();
+    room_.notify_all();
+    int status = Z_OK;
+    bool wroteAll = true;
+    if (!skip) {
+      errno = 0;
+      if (!chunk.bytes.empty())
+        wroteAll = gzwrite(file_, chunk.bytes.data(), static_cast<unsigned>(chunk.bytes.size())) ==
+                   static_cast<int>(chunk.bytes.size());
+      if (wroteAll && chunk.flush) status = gzflush(file_, Z_SYNC_FLUSH);
+    }
+    lock.lock();
+    if (!wroteAll) fail("cannot write");
+    if (status != Z_OK) fail("cannot flush");
+    if (chunk.flush) ++flushesDone_;
+    busy_ = false;
+    room_.notify_all();
+  }
+}
+
+void GzipOutput::hand(bool flush) {
+  if (!worker_.joinable()) return;
+  Chunk chunk;
+  chunk.bytes.swap(pending_);
+  chunk.flush = flush;
+  pending_.reserve(kChunkBytes);
+  std::unique_lock<std::mutex> lock(mutex_);
+  room_.wait(lock, [this] { return queue_.size() < kMaxQueued; });
+  queue_.push_back(std::move(chunk));
+  lock.unlock();
+  queued_.notify_one();
+}
+
+void GzipOutput::stopWorker() {
+  if (!worker_.joinable()) return;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  queued_.notify_one();
+  worker_.join();
 }
 
 size_t GzipOutput::Write(const void* buffer, size_t count) {
-  if (file_ == nullptr || failed() || count > static_cast<size_t>(INT_MAX)) return 0;
+  if (file_ == nullptr || count > static_cast<size_t>(INT_MAX) || failed()) return 0;
   if (count == 0) return 0;
-  errno = 0;
-  const int n = gzwrite(file_, buffer, static_cast<unsigned>(count));
-  if (n <= 0 || static_cast<size_t>(n) != count) {
-    fail("cannot write");
-    return 0;
-  }
+  const auto* bytes = static_cast<const unsigned char*>(buffer);
+  pending_.insert(pending_.end(), bytes, bytes + count);
   written_ += count;
+  if (pending_.size() >= kChunkBytes) hand(false);
   return count;
 }
 
@@ -47,25 +113,35 @@ uint64_t GzipOutput::Seek(int64_t, mrpt::io::CStream::TSeekOrigin) {
   throw std::logic_error("GzipOutput cannot seek");
 }
 
-bool GzipOutput::syncFlush() {
+bool GzipOutput::syncFlush(bool wait) {
   if (file_ == nullptr || failed()) return false;
-  errno = 0;
-  if (gzflush(file_, Z_SYNC_FLUSH) != Z_OK) {
-    fail("cannot flush");
-    return false;
+  if (worker_.joinable()) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    room_.wait(lock, [this] { return flushesDone_ >= flushesAsked_; });
   }
-  return true;
+  hand(true);
+  ++flushesAsked_;
+  if (wait) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    room_.wait(lock, [this] { return queue_.empty() && !busy_; });
+  }
+  return !failed();
 }
 
 bool GzipOutput::close() {
   if (file_ == nullptr) return !failed();
+  if (!failed()) hand(false);
+  stopWorker();  // the worker writes what is queued first
   errno = 0;
   const int status = gzclose(file_);
   file_ = nullptr;
-  if (status != Z_OK && !failed())
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (status != Z_OK && error_.empty()) {
     error_ = std::string("cannot close: ") +
              (status == Z_ERRNO ? std::strerror(errno) : "zlib error " + std::to_string(status));
-  return !failed();
+    failed_ = true;
+  }
+  return error_.empty();
 }
 
 GzipInput::GzipInput(const std::string& path) {

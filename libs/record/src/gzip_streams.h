@@ -6,13 +6,23 @@
 #include <mrpt/io/CStream.h>
 #include <zlib.h>
 
+#include <atomic>
+#include <condition_variable>
 #include <cstdio>
+#include <deque>
+#include <mutex>
 #include <string>
+#include <thread>
+#include <vector>
 
 namespace coinspect::record::detail {
 
 // Writes a gzip file. zlib's gzip header has no name and mtime 0, so the bytes depend only on
-// the data and the compression level. Write errors are sticky: failed() and error() tell why.
+// the data and the compression level. Compression and file writes run on a worker thread: the
+// caller only copies bytes into 1 MiB chunks (MRPT archives write field by field), so recording
+// costs the simulator little wall time on a second core. At most kMaxQueued chunks wait, which
+// keeps memory bounded. Errors are sticky and reported by the next call after the worker met
+// them: failed() and error() tell why.
 class GzipOutput : public mrpt::io::CStream {
  public:
   GzipOutput(const std::string& path, int level);  // check failed() afterwards
@@ -26,19 +36,48 @@ class GzipOutput : public mrpt::io::CStream {
   uint64_t getTotalBytesCount() const override { return written_; }
   uint64_t getPosition() const override { return written_; }
 
-  // Pushes everything written so far to the OS as a complete deflate block: a reader of the file
-  // (even if this process dies now) can decompress all of it.
-  bool syncFlush();
-  // Writes the gzip trailer and closes the file; false (with error()) if that failed.
+  // Hands everything written so far to the worker, which pushes it to the OS as a complete
+  // deflate block: once it has, a reader of the file (even if this process dies) can decompress
+  // all of it. Flushes are pipelined: a call first waits until the worker has completed the
+  // previous flush, so a killed process leaves at least everything up to the flush before its
+  // last call. Returns false if an error is already known. With `wait`, returns only once the
+  // worker has written everything (and then reports its errors): for the run header, so that an
+  // unwritable or full disk is reported before a mission starts.
+  bool syncFlush(bool wait = false);
+  // Waits for the worker, writes the gzip trailer and closes the file; false (with error()) if
+  // anything failed.
   bool close();
-  bool failed() const { return !error_.empty(); }
-  const std::string& error() const { return error_; }
+  bool failed() const;
+  std::string error() const;
 
  private:
-  void fail(const char* what);
+  static constexpr size_t kChunkBytes = size_t{1} << 20;
+  static constexpr size_t kMaxQueued = 8;
+  struct Chunk {
+    std::vector<unsigned char> bytes;
+    bool flush = false;
+  };
+
+  void hand(bool flush);  // moves pending_ (and a flush request) to the worker's queue
+  void work();            // the worker's loop
+  void stopWorker();
+  void fail(const char* what);  // worker side, with mutex_ held
+
   gzFile file_ = nullptr;
   uint64_t written_ = 0;
+  std::vector<unsigned char> pending_;  // caller's thread only
+
+  mutable std::mutex mutex_;
+  std::condition_variable queued_;  // worker: a chunk or the stop request arrived
+  std::condition_variable room_;    // caller: the queue has room, or the worker is idle
+  std::deque<Chunk> queue_;
+  bool stopping_ = false;
+  bool busy_ = false;          // the worker is writing a chunk it took off the queue
+  uint64_t flushesAsked_ = 0;  // caller's thread only
+  uint64_t flushesDone_ = 0;
   std::string error_;
+  std::atomic<bool> failed_{false};  // error_ is set: checked at every Write without the lock
+  std::thread worker_;
 };
 
 // Reads a gzip file with zlib's inflate, handing out every byte as soon as it is decompressed

@@ -1,5 +1,6 @@
 #include "coinspect/record/rawlog_reader.h"
 
+#include <mrpt/maps/registerAllClasses.h>
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/obs/CObservationComment.h>
 #include <mrpt/serialization/CArchive.h>
@@ -39,6 +40,9 @@ RawlogReader::RawlogReader(const std::filesystem::path& path)
     throw InputError(path_.string(), "run header", "the rawlog is empty");
   // Programs that link coinspect_record_types statically-ish (no dlopen) still get the classes.
   registerObservationClasses();
+  // LiDAR sweeps are mrpt-maps classes (CObservationPointCloud): a program that only reads
+  // would not load mrpt-maps (the linker drops it as unused) and could not read them.
+  mrpt::maps::registerAllClasses_mrpt_maps();
   std::shared_ptr<mrpt::obs::CObservation> first;
   if (!next(first))
     throw InputError(path_.string(), "run header",

@@ -53,8 +53,9 @@ RawlogWriter::RawlogWriter(const std::filesystem::path& path, const RunHeader& h
   comment.text = formatRunHeader(header);
   comment.timestamp = toTimestamp(0.0);
   writeAt(comment, 0.0);
-  // The header is flushed at once: even a run killed in its first second leaves a valid header.
-  flush();
+  // The header is written through at once: even a run killed in its first second leaves a
+  // valid header, and an unwritable or full disk is reported here, before a mission starts.
+  if (!out_->syncFlush(true)) fail(out_->error());
 }
 
 RawlogWriter::~RawlogWriter() {

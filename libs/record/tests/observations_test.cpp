@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "coinspect/record/observations.h"
@@ -124,6 +125,32 @@ TEST(Observations, EventRoundTrips) {
   EXPECT_EQ(c->kind, MissionEventKind::Collision);
   EXPECT_EQ(c->unit, o.unit);
   EXPECT_EQ(c->detail, o.detail);
+}
+
+// The numbers are part of the format (the evaluator and old files rely on them): appended only.
+TEST(Observations, EventKindsKeepTheirNumbersAndRoundTrip) {
+  const std::vector<std::pair<MissionEventKind, const char*>> kinds = {
+      {MissionEventKind::Start, "start"},
+      {MissionEventKind::End, "end"},
+      {MissionEventKind::Collision, "collision"},
+      {MissionEventKind::Failure, "failure"},
+      {MissionEventKind::Death, "death"},
+      {MissionEventKind::NoTakeoff, "no-takeoff"},
+      {MissionEventKind::BlackoutStart, "blackout-start"},
+      {MissionEventKind::BlackoutEnd, "blackout-end"},
+      {MissionEventKind::RecordingFailed, "recording-failed"}};
+  for (size_t number = 0; number < kinds.size(); ++number) {
+    const auto [kind, name] = kinds[number];
+    EXPECT_EQ(static_cast<size_t>(kind), number) << name;
+    EXPECT_STREQ(toString(kind), name);
+    CObservationCoinspectEvent o;
+    setCommon(o, "mission.event", 1.0);
+    o.kind = kind;
+    const auto c = roundTrip(o);
+    ASSERT_TRUE(c);
+    EXPECT_EQ(c->kind, kind);
+  }
+  EXPECT_EQ(kLastMissionEventKind, kinds.back().first);
 }
 
 TEST(Observations, TallyRoundTrips) {

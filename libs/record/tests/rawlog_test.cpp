@@ -217,7 +217,7 @@ TEST(Rawlog, KilledWriterLeavesAReadablePrefixUpToTheLastFlush) {
     const char byte = 1;
     if (write(ready[1], &byte, 1) != 1) _exit(3);
     for (;;)
-      pause();  // the parent kills us here, before the last four events are flushed
+      pause();  // the parent kills us here
   }
   close(ready[1]);
   char byte = 0;
@@ -230,7 +230,9 @@ TEST(Rawlog, KilledWriterLeavesAReadablePrefixUpToTheLastFlush) {
 
   const auto part = readAll(path);
   EXPECT_FALSE(part.status.clean);  // no gzip trailer
-  ASSERT_GE(part.objects.size(), 21u) << part.status.message;
+  // Flushes are pipelined (one may still be in the background writer when the process dies):
+  // at least everything up to the flush before the last, at 1.5 s (events 0-15), reads back.
+  ASSERT_GE(part.objects.size(), 16u) << part.status.message;
   for (size_t i = 0; i < part.objects.size(); ++i)
     EXPECT_EQ(as<CObservationCoinspectEvent>(part.objects[i])->detail, std::to_string(i));
 }

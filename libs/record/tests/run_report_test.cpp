@@ -48,6 +48,11 @@ RunReport sampleReport() {
   r.timing.wallTime = 1.25;
   r.timing.realTimeFactor = 16;
   r.timing.stages["physics"] = 0.75;
+  r.runMode = "realtime";
+  r.realtimeFactor = 2;
+  r.timing.decisions = 40;
+  r.timing.decisionTimeMean = 0.5e-3;
+  r.timing.decisionTimeMax = 2e-3;
   return r;
 }
 
@@ -90,7 +95,12 @@ TEST(RunReport, HasEveryField) {
   EXPECT_EQ(json["timing"]["wall_time"], 1.25);
   EXPECT_EQ(json["timing"]["real_time_factor"], 16.0);
   EXPECT_EQ(json["timing"]["stages"]["physics"], 0.75);
-  EXPECT_EQ(json.size(), 14u);  // nothing else at the top level
+  EXPECT_EQ(json["run_mode"]["mode"], "realtime");
+  EXPECT_EQ(json["run_mode"]["realtime_factor"], 2.0);
+  EXPECT_EQ(json["timing"]["decisions"], 40);
+  EXPECT_EQ(json["timing"]["decision_time_mean"], 0.5e-3);
+  EXPECT_EQ(json["timing"]["decision_time_max"], 2e-3);
+  EXPECT_EQ(json.size(), 15u);  // nothing else at the top level
 }
 
 TEST(RunReport, TextIsSortedAndEqualForEqualReports) {

@@ -255,6 +255,16 @@ const char* toString(MissionEventKind kind) {
       return "collision";
     case MissionEventKind::Failure:
       return "failure";
+    case MissionEventKind::Death:
+      return "death";
+    case MissionEventKind::NoTakeoff:
+      return "no-takeoff";
+    case MissionEventKind::BlackoutStart:
+      return "blackout-start";
+    case MissionEventKind::BlackoutEnd:
+      return "blackout-end";
+    case MissionEventKind::RecordingFailed:
+      return "recording-failed";
   }
   return "unknown";
 }
@@ -274,7 +284,7 @@ void CObservationCoinspectEvent::serializeFrom(CArchive& in, uint8_t version) {
       readCommon(in, *this);
       uint8_t rawKind = 0;
       in >> rawKind >> unit >> detail;
-      ASSERTMSG_(rawKind <= static_cast<uint8_t>(MissionEventKind::Failure),
+      ASSERTMSG_(rawKind <= static_cast<uint8_t>(kLastMissionEventKind),
                  "unknown coinspect mission event kind");
       kind = static_cast<MissionEventKind>(rawKind);
       break;

@@ -66,8 +66,29 @@ size_t GroundStationTally::merge(const ScoreLog& log, bool uavAlive) {
   return improved;
 }
 
+size_t GroundStationTally::mergePoints(const ScoreLog& log, const std::vector<uint32_t>& points,
+                                       bool uavAlive) {
+  COINSPECT_ASSERT(log.size() == value_.size());
+  if (!uavAlive && mode_ == ScoringMode::Strict) return 0;
+  size_t improved = 0;
+  for (const uint32_t i : points) {
+    COINSPECT_ASSERT(i < value_.size());
+    const float best = log.best(i);
+    if (value_[i] < best) {
+      if (value_[i] == 0.0f) ++detected_;
+      value_[i] = best;
+      ++improved;
+    }
+  }
+  return improved;
+}
+
 double GroundStationTally::totalScore() const {
   return sumInOrder(value_);
+}
+
+long long tallyMergeTicks(double physicsStep) {
+  return std::max(1LL, std::llround(kTallyMergePeriod / physicsStep));
 }
 
 bool capturesWhenCrashed(ScoringMode mode) {

@@ -83,6 +83,26 @@ TEST(GroundStationTally, CrashedUavMergedOnlyInCaricMode) {
   EXPECT_EQ(strict.merge(log, /*uavAlive=*/true), 1u);
 }
 
+// Merging only the points a log improved since its last merge gives what merging it all gives.
+TEST(GroundStationTally, MergePointsEqualsMergeOfTheChangedPoints) {
+  ScoreLog a(5), b(5);
+  a.record(0, 0.5);
+  a.record(3, 0.3);
+  GroundStationTally whole(5), sparse(5);
+  whole.merge(a);
+  sparse.mergePoints(a, {0, 3});
+  b.record(0, 0.7);
+  b.record(4, 0.9);
+  a.record(3, 0.6);  // improved since a's merge
+  EXPECT_EQ(whole.merge(b) + whole.merge(a), 3u);
+  EXPECT_EQ(sparse.mergePoints(b, {0, 4}) + sparse.mergePoints(a, {3}), 3u);
+  EXPECT_EQ(whole.values(), sparse.values());
+  EXPECT_EQ(whole.detectedCount(), sparse.detectedCount());
+  GroundStationTally strict(5, ScoringMode::Strict);
+  EXPECT_EQ(strict.mergePoints(a, {0, 3}, /*uavAlive=*/false), 0u);
+  EXPECT_EQ(strict.detectedCount(), 0u);
+}
+
 TEST(ScoringPolicy, ReferenceQuirksOnlyInCaricMode) {
   EXPECT_TRUE(capturesWhenCrashed(ScoringMode::Caric));
   EXPECT_FALSE(capturesWhenCrashed(ScoringMode::Strict));

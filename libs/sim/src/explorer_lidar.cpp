@@ -29,6 +29,10 @@ size_t ExplorerLidar::keyFrameCount() const {
   return impl_->selector.keyFrames().size();
 }
 
+const sensing::LidarScan& ExplorerLidar::lastScan() const {
+  return impl_->scan;
+}
+
 agent::KeyFrameView ExplorerLidar::sweep(const world::RayCaster& caster, double time,
                                          const vehicle::VehicleState& body,
                                          const std::vector<sensing::SphereOccluder>& spheres,

@@ -13,6 +13,10 @@
 #include "coinspect/vehicle/vehicle_state.h"
 #include "coinspect/world/ray_caster.h"
 
+namespace coinspect::sensing {
+struct LidarScan;
+}
+
 namespace coinspect::sim {
 
 class ExplorerLidar {
@@ -30,6 +34,8 @@ class ExplorerLidar {
                             const std::vector<sensing::SphereOccluder>& spheres,
                             agent::LidarView& view);
   size_t keyFrameCount() const;
+  // The latest sweep, points in the sensor frame (what the recorder writes).
+  const sensing::LidarScan& lastScan() const;
 
  private:
   struct Impl;

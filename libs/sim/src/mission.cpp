@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <thread>
 
 #include "coinspect/core/error.h"
 #include "coinspect/core/random.h"
@@ -61,7 +62,7 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
   controlPeriod = ticksFor(vehicle::kControlPeriod, step);
   gimbalPeriod = ticksFor(1.0 / sensing::Gimbal::kUpdateRate, step);
   monitorPeriod = ticksFor(0.01, step);
-  topologyPeriod = ticksFor(0.02, step);
+  topologyPeriod = sensing::tallyMergeTicks(step);
   caster = std::make_unique<world::RayCaster>(scenario.meshes, scenario.groundZ);
   linkModel =
       comms::makeLinkModel(config.links, config.linkRange, config.source + ": [mission] links");
@@ -144,6 +145,7 @@ size_t Mission::Impl::unitIndexOf(const std::string& name, const std::string& wh
 void Mission::Impl::event(const std::string& kind, const std::string& unit,
                           const std::string& detail) {
   events.push_back({now(), kind, unit, detail});
+  if (recorder) recorder->event(events.back());
 }
 
 void Mission::Impl::kill(size_t i, const std::string& cause) {
@@ -300,6 +302,7 @@ void Mission::Impl::updateTopology() {
           links.linked(static_cast<uint32_t>(*station), static_cast<uint32_t>(i)))
         tally.merge(units[i].log, units[i].alive());
   }
+  if (recorder) recorder->topology(now(), links, tally);
   stages.topology += secondsSince(stageStart);
 }
 
@@ -315,6 +318,7 @@ void Mission::Impl::sweepLidars() {
         spheres.push_back({units[j].vehicle->state().position, units[j].collisionRadius});
     auto keyFrame =
         unit.lidar->sweep(*caster, now(), unit.vehicle->state(), spheres, unit.lidarView);
+    if (recorder) recorder->lidar(unit.spec->name, unit.lidar->lastScan(), keyFrame != nullptr);
     if (keyFrame) {
       COINSPECT_ASSERT(keyFrame->id == unit.keyFrames.size());
       unit.keyFrames.push_back(keyFrame);
@@ -344,6 +348,9 @@ void Mission::Impl::capture(size_t i) {
     if (j != i && units[j].vehicle)
       occluders.spheres.push_back({units[j].vehicle->state().position, units[j].collisionRadius});
   scorer->score(unit.spec->camera, capture, occluders, scores);
+  if (recorder)
+    recorder->capture(unit.spec->name, now(), unit.spec->camera, capture, occluders.spheres,
+                      scores);
   agent::CaptureReport report;
   report.time = now();
   for (const auto& s : scores)
@@ -384,12 +391,31 @@ void Mission::Impl::hashStates() {
   }
 }
 
+// Realtime mode, at controller ticks: sleeps until the wall clock has caught up with simulated
+// time (scaled by the factor) since the first step. Behind, it does not sleep: the run goes as
+// fast as it can and the summary's real-time factor shows what was achieved.
+void Mission::Impl::paceToWallClock() {
+  const auto wallNow = Clock::now();
+  if (!paceWallStart) {
+    paceWallStart = wallNow;
+    paceSimStart = now();
+    return;
+  }
+  const double due = (now() - paceSimStart) / config.realtimeFactor;
+  const double ahead = due - std::chrono::duration<double>(wallNow - *paceWallStart).count();
+  if (ahead <= 0.0) return;
+  std::this_thread::sleep_for(std::chrono::duration<double>(ahead));
+  stages.pacing += secondsSince(wallNow);
+}
+
 bool Mission::Impl::stepOnce() {
   if (ended) return false;
   const auto stageStart = Clock::now();
+  if (config.runMode == RunMode::Realtime && tick % controlPeriod == 0) paceToWallClock();
   const bool monitorTick = tick % monitorPeriod == 0;
   const bool topologyTick = tick % topologyPeriod == 0;
-  bool needState = monitorTick || topologyTick || tick % controlPeriod == 0;
+  bool needState = monitorTick || topologyTick || tick % controlPeriod == 0 || commandDue();
+  if (recorder) needState = needState || recorder->groundTruthDue(tick);
   for (const auto& unit : units) {
     needState = needState || tick % unit.decisionPeriod == 0;
     if (unit.vehicle)
@@ -399,6 +425,7 @@ bool Mission::Impl::stepOnce() {
 
   applyFaultsAndBlackouts();
   if (needState) syncVehicles();
+  if (recorder && recorder->groundTruthDue(tick)) recorder->groundTruth(now(), units);
   if (tick % controlPeriod == 0) {
     hashStates();
     if (controlTickObserver) controlTickObserver();
@@ -415,8 +442,12 @@ bool Mission::Impl::stepOnce() {
   if (tick % gimbalPeriod == 0)
     for (auto& unit : units)
       if (unit.gimbal) unit.gimbal->update(now());
-  for (size_t i = 0; i < units.size(); ++i)
+  if (recorder && tick % gimbalPeriod == 0) recorder->gimbals(now(), units);
+  for (size_t i = 0; i < units.size(); ++i) {
+    applyDueCommands(i);  // latency mode: earlier decisions whose compute time has passed
     if (units[i].alive() && tick % units[i].decisionPeriod == 0) decide(i);
+  }
+  if (recorder) recorder->flushMessages(now());  // what the decisions sent, one record
 
   // The end: the budget on the mission clock is used up (motors stop), or nobody took off.
   const double t = now();
@@ -427,6 +458,7 @@ bool Mission::Impl::stepOnce() {
     ended = true;
     event("no-takeoff", "", "no UAV took off within start_timeout");
   }
+  endRecordingTick();
   ++tick;
   wallTime += secondsSince(stageStart);
   return !ended;

@@ -1,5 +1,7 @@
 // What a strategy sees (only what its robot could know) and how its commands are applied.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 
 #include "mission_impl.h"
@@ -70,9 +72,48 @@ agent::AgentView Mission::Impl::observe(size_t i) {
 }
 
 void Mission::Impl::decide(size_t i) {
-  const auto stageStart = std::chrono::steady_clock::now();
+  using Clock = std::chrono::steady_clock;
+  const auto stageStart = Clock::now();
   auto& unit = units[i];
-  const agent::AgentCommand command = unit.strategy->decide(observe(i));
+  auto view = observe(i);
+  const auto decideStart = Clock::now();
+  agent::AgentCommand command = unit.strategy->decide(view);
+  const double computeTime = std::chrono::duration<double>(Clock::now() - decideStart).count();
+  ++decisionTimes.count;
+  decisionTimes.total += computeTime;
+  decisionTimes.max = std::max(decisionTimes.max, computeTime);
+  if (config.runMode != RunMode::Latency) {
+    applyCommand(i, command);
+  } else {
+    // The command applies at the first tick at or after decision time + compute time, and never
+    // before an earlier decision's command of the same unit.
+    long long applyTick = tick + static_cast<long long>(std::ceil(computeTime / step - 1e-9));
+    if (!unit.pendingCommands.empty())
+      applyTick = std::max(applyTick, unit.pendingCommands.back().applyTick);
+    unit.pendingCommands.push_back({applyTick, std::move(command)});
+    applyDueCommands(i);  // applies now only if the clock did not move (compute time ~ 0)
+  }
+  stages.decisions += std::chrono::duration<double>(Clock::now() - stageStart).count();
+}
+
+void Mission::Impl::applyDueCommands(size_t i) {
+  auto& unit = units[i];
+  while (!unit.pendingCommands.empty() && unit.pendingCommands.front().applyTick <= tick) {
+    // A unit that died meanwhile has no computer left to send its command.
+    if (unit.alive()) applyCommand(i, unit.pendingCommands.front().command);
+    unit.pendingCommands.pop_front();
+  }
+}
+
+bool Mission::Impl::commandDue() const {
+  for (const auto& unit : units)
+    if (!unit.pendingCommands.empty() && unit.pendingCommands.front().applyTick <= tick)
+      return true;
+  return false;
+}
+
+void Mission::Impl::applyCommand(size_t i, const agent::AgentCommand& command) {
+  auto& unit = units[i];
   const double t = now();
   if (command.setpoint) {
     vehicle::Setpoint setpoint;
@@ -106,6 +147,7 @@ void Mission::Impl::decide(size_t i) {
       if (units[j].spec->name == message.to) to = j;
     if (to == units.size() || to == i) {
       ++misaddressed;  // no such unit: dropped, like a message to nobody
+      if (recorder) recorder->misaddressed(i, message.to, message.topic, message.bytes.size());
       continue;
     }
     comms::Message out;
@@ -116,8 +158,6 @@ void Mission::Impl::decide(size_t i) {
     out.sentTime = t;
     network->send(std::move(out));
   }
-  stages.decisions +=
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - stageStart).count();
 }
 
 }  // namespace coinspect::sim

@@ -30,7 +30,27 @@ uint64_t nonNegative(const Config& config, const std::string& section, const std
   return static_cast<uint64_t>(value);
 }
 
+RunMode parseRunMode(const Config& config, const std::string& text) {
+  if (text == "lockstep") return RunMode::Lockstep;
+  if (text == "latency") return RunMode::Latency;
+  if (text == "realtime") return RunMode::Realtime;
+  throw InputError(config.source(), "[mission] run_mode",
+                   "'" + text + "' is not a run mode (lockstep, latency or realtime)");
+}
+
 }  // namespace
+
+std::string toString(RunMode mode) {
+  switch (mode) {
+    case RunMode::Lockstep:
+      return "lockstep";
+    case RunMode::Latency:
+      return "latency";
+    case RunMode::Realtime:
+      return "realtime";
+  }
+  return "lockstep";
+}
 
 std::filesystem::path defaultShareDir() {
   return COINSPECT_SHARE_DIR;
@@ -76,7 +96,17 @@ MissionConfig MissionConfig::read(const Config& config, std::optional<uint64_t> 
   out.lidars =
       config.has(m, "lidars") ? config.getPath(m, "lidars") : defaultShareDir() / "lidars.ini";
   out.explorerLidar = config.getString(m, "explorer_lidar", out.explorerLidar);
+  out.runMode = parseRunMode(config, config.getString(m, "run_mode", "lockstep"));
+  // A factor that would be ignored is an error rather than a silent no-op.
+  if (config.has(m, "realtime_factor")) {
+    if (out.runMode != RunMode::Realtime)
+      throw InputError(config.source(), "[mission] realtime_factor",
+                       "only allowed with run_mode = realtime");
+    out.realtimeFactor =
+        positive(config, m, "realtime_factor", config.getDouble(m, "realtime_factor"));
+  }
   out.strategy = config.getString("strategy", "name");
+  out.record = RecordConfig::read(config, out.physicsStep);
 
   for (const auto& section : config.sections()) {
     if (startsWith(section, "fault.")) {

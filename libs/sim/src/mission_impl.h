@@ -2,6 +2,7 @@
 #pragma once
 
 #include <chrono>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -20,8 +21,15 @@
 #include "coinspect/vehicle/multirotor.h"
 #include "coinspect/world/ray_caster.h"
 #include "explorer_lidar.h"
+#include "mission_recorder.h"
 
 namespace coinspect::sim {
+
+// A decided command waiting for its tick (latency mode).
+struct PendingCommand {
+  long long applyTick = 0;
+  agent::AgentCommand command;
+};
 
 // One unit of the fleet: its constant description and its state.
 struct UnitRuntime {
@@ -49,6 +57,8 @@ struct UnitRuntime {
   std::vector<agent::KeyFrameView> pendingOwnKeyFrames;
   std::vector<agent::KeyFrameView> keyFrames;  // all own key frames, by id
   agent::LidarView lidarView;
+  // Latency mode: decided commands not applied yet, in decision order (apply ticks ascending).
+  std::deque<PendingCommand> pendingCommands;
 
   bool isUav() const { return vehicle != nullptr; }
   bool alive() const { return vehicle ? vehicle->alive() : stationAlive; }
@@ -97,10 +107,15 @@ struct Mission::Impl {
   sensing::Occluders occluders;             // buffer
 
   std::function<void()> controlTickObserver;  // set through Mission::setControlTickObserver
+  std::unique_ptr<MissionRecorder> recorder;  // set through Mission::startRecording
 
-  // Timing (wall clock, reported only).
+  // Timing (wall clock, reported only; in latency mode it also delays commands).
   StageTimes stages;
   double wallTime = 0.0;
+  DecisionTimes decisionTimes;  // Strategy::decide alone
+  // Realtime mode: the wall clock and simulated time of the first step, the pacing reference.
+  std::optional<std::chrono::steady_clock::time_point> paceWallStart;
+  double paceSimStart = 0.0;
 
   Impl(world::Scenario scenario, MissionConfig config, const Config& ini,
        const agent::StrategyRegistry& registry);
@@ -119,7 +134,12 @@ struct Mission::Impl {
   void sweepLidars();
   void capture(size_t unit);
   void decide(size_t unit);
+  void applyCommand(size_t unit, const agent::AgentCommand& command);
+  void applyDueCommands(size_t unit);
+  bool commandDue() const;
+  void paceToWallClock();
   void hashStates();
+  void endRecordingTick();
   agent::AgentView observe(size_t unit);
   std::vector<bool> aliveFlags() const;
 };

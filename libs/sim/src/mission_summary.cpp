@@ -1,10 +1,21 @@
 #include "coinspect/sim/mission_summary.h"
 
 #include <cstdio>
+#include <string>
 
 #include "mission_impl.h"
 
 namespace coinspect::sim {
+
+namespace {
+
+std::string fixed(double value, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+}  // namespace
 
 MissionSummary Mission::summary() const {
   const auto& impl = *impl_;
@@ -46,6 +57,9 @@ MissionSummary Mission::summary() const {
   out.simTime = impl.now();
   out.wallTime = impl.wallTime;
   out.stages = impl.stages;
+  out.runMode = toString(impl.config.runMode);
+  out.requestedRealtimeFactor = impl.config.realtimeFactor;
+  out.decisionTimes = impl.decisionTimes;
   return out;
 }
 
@@ -89,8 +103,19 @@ std::string formatSummary(const MissionSummary& s) {
   add("real-time factor %.1fx\n", s.realTimeFactor());
   const auto& t = s.stages;
   add("stages      physics %.2f s, lidar %.2f s, topology %.2f s, scoring %.2f s, strategies "
-      "%.2f s, collisions %.2f s\n",
-      t.physics, t.lidar, t.topology, t.scoring, t.decisions, t.collisions);
+      "%.2f s, collisions %.2f s%s\n",
+      t.physics, t.lidar, t.topology, t.scoring, t.decisions, t.collisions,
+      s.runMode == "realtime" ? (", pacing " + fixed(t.pacing, 2) + " s").c_str() : "");
+  const auto& d = s.decisionTimes;
+  if (s.runMode == "latency")
+    add("run mode    latency: each command delayed by its decision's compute time (mean %.3f ms, "
+        "max %.3f ms over %llu decisions); not deterministic\n",
+        1e3 * d.mean(), 1e3 * d.max, static_cast<unsigned long long>(d.count));
+  else if (s.runMode == "realtime")
+    add("run mode    realtime at %gx requested, %.2fx achieved\n", s.requestedRealtimeFactor,
+        s.realTimeFactor());
+  else
+    add("run mode    lockstep\n");
   return out;
 }
 

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -80,6 +81,11 @@ class Network {
   const LinkCounters& counters(uint32_t from, uint32_t to) const;
   LinkCounters totals() const;
 
+  // Called for every message sent (broadcast copies included) once its fate is decided, in send
+  // order: the recorder logs traffic this way. It must not use the network; copied with it.
+  using SendObserver = std::function<void(const Message& message, bool delivered)>;
+  void setSendObserver(SendObserver observer) { sendObserver_ = std::move(observer); }
+
  private:
   bool withinBudget(size_t link, size_t bytes, double time);
 
@@ -93,6 +99,7 @@ class Network {
   std::vector<LinkCounters> counters_;  // units_ * units_, row = sender
   std::vector<double> tokens_;          // bucket content per directed link, bytes
   std::vector<double> refilledAt_;      // time of the last refill per directed link
+  SendObserver sendObserver_;
 };
 
 }  // namespace coinspect::comms

@@ -32,10 +32,16 @@ class RgbImage {
   std::vector<Rgb> pixels_;
 };
 
+// zlib level of the PNG data: the smallest files by default; replay frames, written by the
+// thousand, take a faster level (about 5x faster at 960x540, files somewhat larger).
+inline constexpr int kPngSmallest = 9;
+inline constexpr int kPngFast = 1;
+
 // 8-bit RGB PNG (zlib-compressed). Throws InputError naming the path when it cannot be written.
-void writePng(const RgbImage& image, const std::filesystem::path& path);
+void writePng(const RgbImage& image, const std::filesystem::path& path,
+              int compressionLevel = kPngSmallest);
 // The encoded bytes (for tests and in-memory use).
-std::vector<uint8_t> encodePng(const RgbImage& image);
+std::vector<uint8_t> encodePng(const RgbImage& image, int compressionLevel = kPngSmallest);
 
 // Colour ramp for a score in [0, 1]: dark red at 0, through orange and yellow, to green at 1.
 Rgb scoreColor(double score);

@@ -147,11 +147,23 @@ class CObservationCoinspectMessages : public mrpt::obs::CObservation {
   void getDescriptionAsText(std::ostream& o) const override;
 };
 
-// Stored as uint8: append new kinds, never renumber.
-enum class MissionEventKind : uint8_t { Start = 0, End = 1, Collision = 2, Failure = 3 };
+// Stored as uint8: append new kinds, never renumber (the evaluator reads these numbers).
+enum class MissionEventKind : uint8_t {
+  Start = 0,
+  End = 1,
+  Collision = 2,
+  Failure = 3,  // an injected fault
+  Death = 4,    // a unit stops working (collision, fault): `coinspect eval` tracks alive flags
+  NoTakeoff = 5,
+  BlackoutStart = 6,
+  BlackoutEnd = 7,
+  RecordingFailed = 8,  // the recorder could not write; the mission was stopped
+};
+// The last kind this build knows (readers reject larger values).
+inline constexpr MissionEventKind kLastMissionEventKind = MissionEventKind::RecordingFailed;
 const char* toString(MissionEventKind kind);
 
-// A mission event: start, end, a unit's collision or failure.
+// A mission event: start, end, no take-off, a unit's collision, failure or death, blackouts.
 class CObservationCoinspectEvent : public mrpt::obs::CObservation {
   DEFINE_SERIALIZABLE(CObservationCoinspectEvent, coinspect::record)
 

@@ -4,7 +4,7 @@
 // Hooking it into a mission (what the simulator does, in simulated time):
 //   RawlogWriter rawlog(runFolder / "run.rawlog", header, options.flushPeriod);
 //   every 1 / options.groundTruthRate s, per unit:  rawlog.writeGroundTruth(unit, t, ...)
-//   each LiDAR key frame (every sweep if options.fullRateLidar):  rawlog.writeLidar(unit, scan)
+//   each LiDAR key frame (every sweep with LidarRecording::All):  rawlog.writeLidar(unit, scan)
 //   gimbal, capture, link, message, event and tally records through the typed helpers;
 //   rawlog.close() at the end. Any I/O failure (unwritable folder, disk full) throws
 //   coinspect::InputError naming the file at once: the caller stops the mission.
@@ -41,11 +41,14 @@ namespace detail {
 class GzipOutput;
 }
 
-// What the simulator records and how often (defaults from the issue).
+// Which LiDAR sweeps the simulator records.
+enum class LidarRecording { None, KeyFrames, All };
+
+// What the simulator records and how often (defaults from the issue; [record] in doc/config.md).
 struct RecordOptions {
-  double groundTruthRate = 20.0;  // Hz, pose + IMU per unit
-  bool fullRateLidar = false;     // false: LiDAR key frames only
-  double flushPeriod = 1.0;       // simulated s between flushes
+  double groundTruthRate = 20.0;                     // Hz, pose + IMU per unit
+  LidarRecording lidar = LidarRecording::KeyFrames;  // key frames only by default
+  double flushPeriod = 1.0;                          // simulated s between flushes
 };
 
 class RawlogWriter {

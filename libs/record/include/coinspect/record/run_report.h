@@ -27,6 +27,10 @@ struct RunReportTiming {
   double wallTime = 0.0;  // s
   double realTimeFactor = 0.0;
   std::map<std::string, double> stages;  // s per stage of the loop
+  // Wall time of the strategies' decide() calls (in latency mode, the commands' delays).
+  uint64_t decisions = 0;
+  double decisionTimeMean = 0.0;  // s
+  double decisionTimeMax = 0.0;   // s
 };
 
 struct RunReport {
@@ -50,7 +54,10 @@ struct RunReport {
   double missionTime = 0.0;  // s on the mission clock at the end
   double budget = 0.0;       // s
   double simTime = 0.0;      // s simulated in total
-  RunReportTiming timing;    // wall clock: differs between equal runs
+  // lockstep, latency (not deterministic) or realtime; the pace asked for in realtime mode.
+  std::string runMode = "lockstep";
+  double realtimeFactor = 1.0;
+  RunReportTiming timing;  // wall clock: differs between equal runs
 };
 
 // The report as JSON text: keys sorted at every level, two-space indent, numbers printed

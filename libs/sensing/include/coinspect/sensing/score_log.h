@@ -48,6 +48,11 @@ class GroundStationTally {
   // has no alive check); in strict mode a crashed UAV no longer transmits and is skipped.
   // Returns how many points improved.
   size_t merge(const ScoreLog& log, bool uavAlive = true);
+  // The same merge restricted to the listed points: equal to merge(log, uavAlive) when every
+  // other point of `log` is already <= the tally (e.g. `points` lists what the log improved
+  // since it was last merged). For the evaluator of recorded runs, which merges often.
+  size_t mergePoints(const ScoreLog& log, const std::vector<uint32_t>& points,
+                     bool uavAlive = true);
 
   float value(uint32_t index) const { return value_[index]; }
   const std::vector<float>& values() const { return value_; }
@@ -63,6 +68,13 @@ class GroundStationTally {
   size_t detected_ = 0;
   ScoringMode mode_ = ScoringMode::Caric;
 };
+
+// The ground station merges the logs of the UAVs in its line of sight at every topology update
+// (the reference's 50 Hz), i.e. every tallyMergeTicks(step) physics steps: max(1, round(0.02 /
+// step)). The mission and the evaluator of recorded runs (libs/eval) share it, so that a replay
+// merges at exactly the ticks the live run did.
+inline constexpr double kTallyMergePeriod = 0.02;  // s
+long long tallyMergeTicks(double physicsStep);
 
 // Reference quirks as policy (doc/scoring.md, "Quirks"):
 // A crashed UAV keeps capturing in caric mode (nothing stops its camera); not in strict mode.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -12,6 +13,7 @@
 
 #include "coinspect/agent/strategy.h"
 #include "coinspect/core/config.h"
+#include "coinspect/record/run_header.h"
 #include "coinspect/sim/mission_config.h"
 #include "coinspect/sim/mission_summary.h"
 #include "coinspect/vehicle/vehicle_state.h"
@@ -64,6 +66,17 @@ class Mission {
   // record poses. It must not change the mission; an empty function removes it.
   using ControlTickObserver = std::function<void(const Mission&)>;
   void setControlTickObserver(ControlTickObserver observer);
+
+  // Records the run as a rawlog at `rawlog` (doc/recording.md) with the options of
+  // config().record; call it once, before the first step. The file is created and the header
+  // written at once: an unwritable path throws InputError here. A write error later stops the
+  // mission cleanly at the end of that tick (event "recording-failed"); recordingError() then
+  // holds the message, which names the file. The rawlog is closed when the mission ends.
+  void startRecording(const std::filesystem::path& rawlog, const record::RunHeader& header);
+  // Closes the rawlog now (for callers that stop before the end); a failure is reported as above.
+  void stopRecording();
+  const std::optional<std::string>& recordingError() const;
+  std::optional<std::filesystem::path> recordingPath() const;
 
  private:
   struct Impl;

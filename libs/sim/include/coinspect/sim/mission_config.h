@@ -1,5 +1,5 @@
-// The mission part of a run's INI file ([mission], [strategy], [fault.<n>], [blackout.<n>]),
-// read strictly; every key is documented in doc/config.md, "Missions (coinspect run)".
+// The mission part of a run's INI file ([mission], [strategy], [fault.<n>], [blackout.<n>],
+// [record]), read strictly; every key is documented in doc/config.md, "Missions (coinspect run)".
 #pragma once
 
 #include <cstdint>
@@ -10,6 +10,7 @@
 
 #include "coinspect/core/config.h"
 #include "coinspect/sensing/inspection_scorer.h"
+#include "coinspect/sim/record_config.h"
 #include "coinspect/world/scenario.h"
 
 namespace coinspect::sim {
@@ -26,6 +27,14 @@ struct BlackoutSpec {
   double to = 0.0;
   std::vector<std::string> units;  // empty: every link
 };
+
+// How simulated time relates to the wall clock (doc/architecture.md, "Run modes").
+enum class RunMode {
+  Lockstep,  // a decision's command applies at the tick it was decided (deterministic)
+  Latency,   // a command applies once the decision's measured compute time has passed
+  Realtime,  // lockstep, paced so that simulated time never runs ahead of the wall clock
+};
+std::string toString(RunMode mode);
 
 struct MissionConfig {
   std::string source;    // the INI file, for error messages
@@ -46,9 +55,12 @@ struct MissionConfig {
   std::string photographerAirframe = "photographer";
   std::filesystem::path lidars;                 // lidars.ini
   std::string explorerLidar = "vlp16-tilting";  // "none" disables the LiDAR
+  RunMode runMode = RunMode::Lockstep;
+  double realtimeFactor = 1.0;  // realtime: simulated s per wall s
   std::string strategy;
   std::vector<FaultSpec> faults;
   std::vector<BlackoutSpec> blackouts;
+  RecordConfig record;  // [record]
 
   // Reads the keys above (marking them used); `seedOverride` replaces [mission] seed.
   static MissionConfig read(const Config& config, std::optional<uint64_t> seedOverride = {});

@@ -32,6 +32,15 @@ struct UnitSummary {
 struct StageTimes {
   double physics = 0.0, decisions = 0.0, lidar = 0.0, topology = 0.0, scoring = 0.0,
          collisions = 0.0;
+  double pacing = 0.0;  // realtime mode: asleep, waiting for the wall clock
+};
+
+// Wall-clock time of Strategy::decide calls: in latency mode, the delays of their commands.
+struct DecisionTimes {
+  uint64_t count = 0;
+  double total = 0.0;  // s
+  double max = 0.0;    // s
+  double mean() const { return count ? total / static_cast<double>(count) : 0.0; }
 };
 
 struct MissionSummary {
@@ -56,6 +65,9 @@ struct MissionSummary {
   double wallTime = 0.0;  // s
   double realTimeFactor() const { return wallTime > 0.0 ? simTime / wallTime : 0.0; }
   StageTimes stages;
+  std::string runMode = "lockstep";      // lockstep, latency or realtime
+  double requestedRealtimeFactor = 1.0;  // realtime: the pace asked for
+  DecisionTimes decisionTimes;
 };
 
 // Human-readable summary, one topic per line ("score ...", "collisions ...", ...).

@@ -1,0 +1,16 @@
+// Options shared by `coinspect render` and `coinspect replay`.
+#pragma once
+
+#include <string>
+
+namespace coinspect::app {
+
+struct PictureSize {
+  int width = 0;
+  int height = 0;
+};
+
+// "WxH" with both between 64 and 8192 pixels; throws InputError naming `source` otherwise.
+PictureSize parsePictureSize(const std::string& text, const std::string& source);
+
+}  // namespace coinspect::app

@@ -1,0 +1,32 @@
+// Private to the pictures: the legend box shared by the plan views and the 3D overlays.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "coinspect/eval/canvas.h"
+#include "coinspect/eval/image.h"
+#include "coinspect/eval/run_tracks.h"
+#include "coinspect/world/scenario.h"
+
+namespace coinspect::eval::detail {
+
+struct LegendEntry {
+  enum class Kind { Line, Marker, Box, ScoreBar, Unscored } kind;
+  std::string label;
+  Rgb color;
+  Marker marker = Marker::Disc;
+};
+
+// One line entry per unit of `tracks`, in its unitColor: "name (role)" (the role from the
+// scenario's fleet).
+std::vector<LegendEntry> unitEntries(const world::Scenario& scenario, const RunTracks& tracks);
+
+// Size of the legend box at this text scale.
+int legendWidth(const std::vector<LegendEntry>& entries, int scale);
+int legendHeight(const std::vector<LegendEntry>& entries, int scale);
+// A white box with a frame, one entry per row: a swatch, then the label.
+void drawLegend(RgbImage& image, int left, int top, const std::vector<LegendEntry>& entries,
+                int scale);
+
+}  // namespace coinspect::eval::detail

@@ -1,0 +1,50 @@
+#!/bin/bash
+# End-to-end: `coinspect run --out` records run.rawlog; `coinspect eval` scores it again, finds
+# the recorded score (exit 0, "equal") and writes eval.json and coverage.csv. A truncated copy of
+# the rawlog is evaluated up to the damage: exit 1, the message names the objects read and the
+# byte offset. Usage: eval_test.sh <coinspect> <source dir> <scratch dir>
+set -euo pipefail
+coinspect=$1
+source_dir=$2
+out=$3
+rm -rf "$out"
+mkdir -p "$out"
+"$coinspect" run "$source_dir/config/quick.ini" --set mission.budget=20 --out "$out/run" \
+  > "$out/run.log"
+test -s "$out/run/run.rawlog" || { echo "coinspect run wrote no run.rawlog"; exit 1; }
+
+# The whole rawlog: equal, exit 0, files written.
+set +e
+"$coinspect" eval "$out/run/run.rawlog" --out "$out/eval" > "$out/eval.log" 2> "$out/eval.err"
+status=$?
+set -e
+cat "$out/eval.log"
+[[ $status -eq 0 ]] || { cat "$out/eval.err"; echo "eval exit status $status, expected 0"; exit 1; }
+grep -Eq '^re-scored +Q = [0-9.]+, detected [0-9]+ / 150: equal$' "$out/eval.log" ||
+  { echo "no 'equal' line"; exit 1; }
+# The two printed scores agree (equal already compares them exactly) and are not 0.
+recorded=$(sed -nE 's/^recorded +Q = ([0-9.]+),.*/\1/p' "$out/eval.log")
+rescored=$(sed -nE 's/^re-scored +Q = ([0-9.]+),.*/\1/p' "$out/eval.log")
+[[ -n $recorded && $recorded == "$rescored" ]] || { echo "recorded $recorded != $rescored"; exit 1; }
+awk -v q="$recorded" 'BEGIN { exit !(q > 0) }' || { echo "Q is 0"; exit 1; }
+grep -Eq '^inspector1 +photographer +[1-9][0-9]* ' "$out/eval.log" ||
+  { echo "no unit row for inspector1"; exit 1; }
+grep -q '"equal": true' "$out/eval/eval.json" || { echo "eval.json lacks equal: true"; exit 1; }
+head -1 "$out/eval/coverage.csv" | grep -qx 'time,score,detected' || { echo "bad coverage.csv"; exit 1; }
+[[ $(wc -l < "$out/eval/coverage.csv") -gt 1 ]] || { echo "coverage.csv has no sample"; exit 1; }
+
+# A truncated copy: results up to the damage, exit 1, the reader's message on stderr.
+size=$(stat -c %s "$out/run/run.rawlog")
+head -c $((size / 2)) "$out/run/run.rawlog" > "$out/cut.rawlog"
+set +e
+"$coinspect" eval "$out/cut.rawlog" > "$out/cut.log" 2> "$out/cut.err"
+status=$?
+set -e
+cat "$out/cut.log" "$out/cut.err"
+[[ $status -eq 1 ]] || { echo "truncated rawlog: exit status $status, expected 1"; exit 1; }
+grep -Eq 'rawlog damaged: .*cut\.rawlog: [0-9]+ objects read, damage at byte offset [0-9]+' \
+  "$out/cut.err" || { echo "no damage message with objects and offset"; exit 1; }
+grep -Eq '^read +[0-9]+ objects to t = [0-9.]+ s, then DAMAGED at byte offset [0-9]+' \
+  "$out/cut.log" || { echo "no damaged read line"; exit 1; }
+grep -Eq '^re-scored +Q = ' "$out/cut.log" || { echo "no results before the damage"; exit 1; }
+echo "eval end-to-end: ok"
