@@ -7,11 +7,8 @@ set -euo pipefail
 coinspect=$1
 source_dir=$2
 out=$3
-rm -rf "$out"
-mkdir -p "$out"
-"$coinspect" run "$source_dir/config/quick.ini" --set mission.budget=20 --out "$out/run" \
-  > "$out/run.log"
-test -s "$out/run/run.rawlog" || { echo "coinspect run wrote no run.rawlog"; exit 1; }
+source "$(dirname "$0")/../record_short_run.sh"
+record_short_run "$coinspect" "$source_dir" "$out" 20
 
 # The whole rawlog: equal, exit 0, files written.
 set +e

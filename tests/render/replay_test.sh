@@ -7,10 +7,8 @@ set -euo pipefail
 coinspect=$1
 source_dir=$2
 out=$3
-rm -rf "$out"
-mkdir -p "$out"
-"$coinspect" run "$source_dir/config/quick.ini" --set mission.budget=4 --out "$out/run" \
-  > "$out/run.log"
+source "$(dirname "$0")/../record_short_run.sh"
+record_short_run "$coinspect" "$source_dir" "$out" 4
 
 "$coinspect" replay "$out/run/run.rawlog" --fps 2 --size 160x120 --out "$out/overview" \
   > "$out/replay.log" 2> "$out/replay.err"

@@ -39,6 +39,15 @@ std::string label(const std::string& unit, const char* sensor) {
   return unit + "." + sensor;
 }
 
+// An observation of class T with its sensor label and simulated-time stamp set.
+template <class T>
+T stamped(std::string sensorLabel, double time) {
+  T observation;
+  observation.sensorLabel = std::move(sensorLabel);
+  observation.timestamp = toTimestamp(time);
+  return observation;
+}
+
 }  // namespace
 
 RawlogWriter::RawlogWriter(const std::filesystem::path& path, const RunHeader& header,
@@ -90,16 +99,12 @@ void RawlogWriter::writeGroundTruth(const std::string& unit, double time,
                                     const Eigen::Isometry3d& bodyPose,
                                     const Eigen::Vector3d& linearVelocity,
                                     const Eigen::Vector3d& angularVelocity) {
-  mrpt::obs::CObservationRobotPose pose;
-  pose.sensorLabel = label(unit, "pose");
-  pose.timestamp = toTimestamp(time);
+  auto pose = stamped<mrpt::obs::CObservationRobotPose>(label(unit, "pose"), time);
   pose.pose.mean = mrpt::poses::CPose3D::FromHomogeneousMatrix(bodyPose.matrix());
   pose.pose.cov.setZero();
   writeAt(pose, time);
 
-  mrpt::obs::CObservationIMU imu;
-  imu.sensorLabel = label(unit, "imu");
-  imu.timestamp = toTimestamp(time);
+  auto imu = stamped<mrpt::obs::CObservationIMU>(label(unit, "imu"), time);
   imu.set(mrpt::obs::IMU_X_VEL, linearVelocity.x());
   imu.set(mrpt::obs::IMU_Y_VEL, linearVelocity.y());
   imu.set(mrpt::obs::IMU_Z_VEL, linearVelocity.z());
@@ -116,9 +121,7 @@ void RawlogWriter::writeLidar(const std::string& unit, const sensing::LidarScan&
 
 void RawlogWriter::writeGimbal(const std::string& unit, double time, double yaw, double pitch,
                                double yawRate, double pitchRate) {
-  CObservationCoinspectGimbal gimbal;
-  gimbal.sensorLabel = label(unit, "gimbal");
-  gimbal.timestamp = toTimestamp(time);
+  auto gimbal = stamped<CObservationCoinspectGimbal>(label(unit, "gimbal"), time);
   gimbal.yaw = yaw;
   gimbal.pitch = pitch;
   gimbal.yawRate = yawRate;
@@ -131,9 +134,7 @@ void RawlogWriter::writeCapture(const std::string& unit, double time,
                                 const sensing::CaptureState& state,
                                 const std::vector<sensing::SphereOccluder>& occluders,
                                 const std::vector<sensing::PointScore>& scores) {
-  CObservationCoinspectCapture capture;
-  capture.sensorLabel = label(unit, "camera");
-  capture.timestamp = toTimestamp(time);
+  auto capture = stamped<CObservationCoinspectCapture>(label(unit, "camera"), time);
   capture.cameraPose = toPoseRecord(cameraPose);
   capture.linearVelocity = {state.linearVelocity.x(), state.linearVelocity.y(),
                             state.linearVelocity.z()};
@@ -158,26 +159,21 @@ void RawlogWriter::writeCapture(const std::string& unit, double time,
 }
 
 void RawlogWriter::writeLinkChanges(double time, const std::vector<LinkChangeRecord>& changes) {
-  CObservationCoinspectLinks links;
-  links.sensorLabel = "gcs.links";
-  links.timestamp = toTimestamp(time);
+  auto links = stamped<CObservationCoinspectLinks>("gcs.links", time);
   links.changes = changes;
   writeAt(links, time);
 }
 
 void RawlogWriter::writeMessages(double time, const std::vector<MessageRecord>& messages) {
-  CObservationCoinspectMessages log;
-  log.sensorLabel = "gcs.messages";
-  log.timestamp = toTimestamp(time);
+  auto log = stamped<CObservationCoinspectMessages>("gcs.messages", time);
   log.messages = messages;
   writeAt(log, time);
 }
 
 void RawlogWriter::writeEvent(double time, MissionEventKind kind, const std::string& unit,
                               const std::string& detail) {
-  CObservationCoinspectEvent event;
-  event.sensorLabel = unit.empty() ? "mission.event" : label(unit, "event");
-  event.timestamp = toTimestamp(time);
+  auto event = stamped<CObservationCoinspectEvent>(
+      unit.empty() ? "mission.event" : label(unit, "event"), time);
   event.kind = kind;
   event.unit = unit;
   event.detail = detail;
@@ -186,9 +182,7 @@ void RawlogWriter::writeEvent(double time, MissionEventKind kind, const std::str
 
 void RawlogWriter::writeTally(double time, const std::vector<TallyChangeRecord>& changes,
                               uint64_t detected, uint64_t pointCount, double totalScore) {
-  CObservationCoinspectTally tally;
-  tally.sensorLabel = "gcs.tally";
-  tally.timestamp = toTimestamp(time);
+  auto tally = stamped<CObservationCoinspectTally>("gcs.tally", time);
   tally.changes = changes;
   tally.detected = detected;
   tally.pointCount = pointCount;

@@ -296,13 +296,14 @@ void Mission::Impl::updateTopology() {
         if (j != u) links.setLinked(static_cast<uint32_t>(u), static_cast<uint32_t>(j), false);
   }
   network->setTopology(links, aliveFlags(), now());
+  size_t improved = 0;
   if (station && units[*station].alive()) {
     for (size_t i = 0; i < units.size(); ++i)
       if (units[i].vehicle &&
           links.linked(static_cast<uint32_t>(*station), static_cast<uint32_t>(i)))
-        tally.merge(units[i].log, units[i].alive());
+        improved += tally.merge(units[i].log, units[i].alive());
   }
-  if (recorder) recorder->topology(now(), links, tally);
+  if (recorder) recorder->topology(now(), links, tally, improved > 0);
   stages.topology += secondsSince(stageStart);
 }
 

@@ -95,7 +95,7 @@ void MissionRecorder::groundTruth(double time, const std::vector<UnitRuntime>& u
 }
 
 void MissionRecorder::topology(double time, const comms::LinkMatrix& links,
-                               const sensing::GroundStationTally& tally) {
+                               const sensing::GroundStationTally& tally, bool tallyImproved) {
   guarded([&](record::RawlogWriter& w) {
     const auto changes = links.changedSince(previousLinks_);
     if (!changes.empty()) {
@@ -106,10 +106,9 @@ void MissionRecorder::topology(double time, const comms::LinkMatrix& links,
       w.writeLinkChanges(time, records);
       previousLinks_ = links;
     }
-    // Comparing the values (a few thousand floats at 50 Hz) is cheaper than anything that
-    // would make the tally report what it changed.
+    if (!tallyImproved) return;
+    // The merges report how many points improved, not which: compare with the last values.
     const auto& values = tally.values();
-    if (values == previousValues_) return;
     std::vector<record::TallyChangeRecord> improved;
     for (size_t i = 0; i < values.size(); ++i) {
       if (values[i] == previousValues_[i]) continue;

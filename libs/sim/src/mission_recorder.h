@@ -48,8 +48,10 @@ class MissionRecorder {
   void groundTruth(double time, const std::vector<UnitRuntime>& units);
   // After a topology update: the link pairs that changed since the last update, then the
   // points whose ground-station value improved (nothing is written when nothing changed).
+  // `tallyImproved`: the merges of this update improved some point (else the values are not
+  // compared at all, which would cost a pass over every point at 50 Hz).
   void topology(double time, const comms::LinkMatrix& links,
-                const sensing::GroundStationTally& tally);
+                const sensing::GroundStationTally& tally, bool tallyImproved);
   void lidar(const std::string& unit, const sensing::LidarScan& scan, bool keyFrame);
   void capture(const std::string& unit, double time, const world::CameraSpec& camera,
                const sensing::CaptureState& state,
