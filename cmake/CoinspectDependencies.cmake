@@ -26,3 +26,5 @@ find_package(mrpt-serialization REQUIRED)
 find_package(mrpt-rtti REQUIRED)
 # Pictures of recorded runs (libs/eval): MRPT's scenes and its headless EGL renderer CFBORender.
 find_package(mrpt-opengl REQUIRED)
+# Robot-side occupancy maps (libs/mapping): OctoMap owned directly (see the MRPT field notes).
+find_package(octomap REQUIRED)

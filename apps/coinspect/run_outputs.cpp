@@ -58,6 +58,8 @@ record::RunReport makeReport(const sim::MissionSummary& s, const Config& ini,
   r.timing.decisions = s.decisionTimes.count;
   r.timing.decisionTimeMean = s.decisionTimes.mean();
   r.timing.decisionTimeMax = s.decisionTimes.max;
+  r.timing.decisionTimeP50 = s.decisionTimes.quantile(0.5);
+  r.timing.decisionTimeP95 = s.decisionTimes.quantile(0.95);
   r.timing.wallTime = s.wallTime;
   r.timing.realTimeFactor = s.realTimeFactor();
   r.timing.stages = {{"physics", s.stages.physics}, {"decisions", s.stages.decisions},

@@ -34,7 +34,7 @@ StrategyRegistry registryWithHover() {
 TEST(StrategyRegistry, CreatesByNameAndPassesTheConfig) {
   const auto registry = registryWithHover();
   const auto config = Config::fromText("[hover]\nrate = 25\n", "test.ini");
-  const StrategyContext context{config, "hover", "jurong", Role::Explorer, 1, 7};
+  const StrategyContext context{config, "hover", "jurong", Role::Explorer, 1, 7, {}, {}, 0.0};
   auto strategy = registry.create("hover", context);
   EXPECT_DOUBLE_EQ(strategy->decisionRate(), 25.0);
   AgentView view;
@@ -49,7 +49,7 @@ TEST(StrategyRegistry, CreatesByNameAndPassesTheConfig) {
 TEST(StrategyRegistry, UnknownNameListsTheKnownOnes) {
   const auto registry = registryWithHover();
   const auto config = Config::fromText("", "run.ini");
-  const StrategyContext context{config, "nope", "jurong", Role::Explorer, 0, 0};
+  const StrategyContext context{config, "nope", "jurong", Role::Explorer, 0, 0, {}, {}, 0.0};
   const auto message = testing::messageOf([&] { registry.create("nope", context); });
   EXPECT_MENTIONS(message, "nope");
   EXPECT_MENTIONS(message, "hover");

@@ -59,7 +59,9 @@ std::string runReportJson(const RunReport& report) {
         {"stages", report.timing.stages},
         {"decisions", report.timing.decisions},
         {"decision_time_mean", report.timing.decisionTimeMean},
-        {"decision_time_max", report.timing.decisionTimeMax}}}};
+        {"decision_time_max", report.timing.decisionTimeMax},
+        {"decision_time_p50", report.timing.decisionTimeP50},
+        {"decision_time_p95", report.timing.decisionTimeP95}}}};
   return json.dump(2) + "\n";
 }
 

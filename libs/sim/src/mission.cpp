@@ -39,6 +39,19 @@ agent::Role toAgentRole(world::UnitRole role) {
   return agent::Role::Photographer;
 }
 
+agent::CameraInfo toCameraInfo(const world::CameraSpec& camera) {
+  agent::CameraInfo out;
+  out.horizontalFov = camera.horizontalFov;
+  out.verticalFov = camera.verticalFov;
+  out.positionInBody = camera.positionInBody;
+  out.exposureTime = camera.exposureTime;
+  out.triggerInterval = camera.triggerInterval;
+  out.focalLength = camera.focalLength;
+  out.pixelSize = camera.pixelSize;
+  out.desiredMmPerPixel = camera.desiredMmPerPixel;
+  return out;
+}
+
 template <class Map>
 const typename Map::mapped_type& lookup(const Map& map, const std::string& name,
                                         const std::string& source, const std::string& key) {
@@ -108,8 +121,13 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
       unit.nextCapture = unit.capturePeriod;
     }
     // Ground stations get a strategy too: it drives a mobile one (gcs_speed > 0).
-    const agent::StrategyContext context{
-        ini, config.strategy, unit.spec->name, unit.role, i, seeds.fork(1000 + i).next()};
+    agent::StrategyContext context{
+        ini, config.strategy, unit.spec->name, unit.role, i, seeds.fork(1000 + i).next(), {}, {},
+        0.0};
+    for (const auto& member : scenario.fleet)
+      context.fleet.push_back({member.name, toAgentRole(member.role)});
+    context.camera = toCameraInfo(unit.spec->camera);
+    context.collisionRadius = unit.collisionRadius;
     unit.strategy = registry.create(config.strategy, context);
     const double rate = unit.strategy->decisionRate();
     if (!(rate > 0.0) || !std::isfinite(rate))

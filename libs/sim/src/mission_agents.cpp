@@ -82,6 +82,7 @@ void Mission::Impl::decide(size_t i) {
   ++decisionTimes.count;
   decisionTimes.total += computeTime;
   decisionTimes.max = std::max(decisionTimes.max, computeTime);
+  decisionTimes.samples.push_back(static_cast<float>(computeTime));
   if (config.runMode != RunMode::Latency) {
     applyCommand(i, command);
   } else {

@@ -1,5 +1,7 @@
 #include "coinspect/sim/mission_summary.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -63,6 +65,17 @@ MissionSummary Mission::summary() const {
   return out;
 }
 
+double DecisionTimes::quantile(double q) const {
+  if (samples.empty()) return 0.0;
+  std::vector<float> sorted = samples;
+  const size_t rank = std::min(
+      sorted.size() - 1,
+      static_cast<size_t>(std::ceil(std::clamp(q, 0.0, 1.0) * static_cast<double>(sorted.size()))) -
+          (q > 0.0 ? 1 : 0));
+  std::nth_element(sorted.begin(), sorted.begin() + rank, sorted.end());
+  return sorted[rank];
+}
+
 std::string formatSummary(const MissionSummary& s) {
   std::string out;
   char line[512];
@@ -107,6 +120,9 @@ std::string formatSummary(const MissionSummary& s) {
       t.physics, t.lidar, t.topology, t.scoring, t.decisions, t.collisions,
       s.runMode == "realtime" ? (", pacing " + fixed(t.pacing, 2) + " s").c_str() : "");
   const auto& d = s.decisionTimes;
+  add("decisions   %llu, compute time per decision p50 %.3f ms, p95 %.3f ms, max %.3f ms\n",
+      static_cast<unsigned long long>(d.count), 1e3 * d.quantile(0.5), 1e3 * d.quantile(0.95),
+      1e3 * d.max);
   if (s.runMode == "latency")
     add("run mode    latency: each command delayed by its decision's compute time (mean %.3f ms, "
         "max %.3f ms over %llu decisions); not deterministic\n",

@@ -16,7 +16,8 @@ std::unique_ptr<agent::Strategy> makeStrategy(const std::string& text, const std
   agent::StrategyRegistry registry;
   registerBuiltinStrategies(registry);
   const auto config = Config::fromText(text, "run.ini");
-  const agent::StrategyContext context{config, "demo-paths", unit, agent::Role::Photographer, 0, 1};
+  const agent::StrategyContext context{config, "demo-paths", unit, agent::Role::Photographer, 0, 1,
+                                       {},     {},           0.0};
   auto strategy = registry.create("demo-paths", context);
   if (allKeysUsed) config.requireAllKeysUsed();
   return strategy;

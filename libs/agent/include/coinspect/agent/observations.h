@@ -74,6 +74,23 @@ struct CaptureReport {
   double scoreGained = 0.0;   // increase of the unit's own-log total
 };
 
+// The unit's own camera, as its owner configured it (the ppcom network file in CARIC).
+struct CameraInfo {
+  double horizontalFov = 0.0, verticalFov = 0.0;  // rad
+  Vec3 positionInBody = Vec3::Zero();             // m
+  double exposureTime = 0.0;                      // s
+  double triggerInterval = 0.0;                   // s
+  double focalLength = 0.0;                       // m
+  double pixelSize = 0.0;                         // m
+  double desiredMmPerPixel = 0.0;                 // r_des, mm/px
+};
+
+// A member of the fleet: names and roles are public (every unit reads the same network file).
+struct FleetMember {
+  std::string name;
+  Role role = Role::Photographer;
+};
+
 // A bounding box of the mission (CARIC publishes them to every unit).
 struct BoxView {
   Vec3 center = Vec3::Zero();

@@ -23,7 +23,8 @@ class Strategy {
 };
 
 // What a strategy factory receives: the run's config (to read its own keys strictly, which marks
-// them used), the unit it drives, and a seed for its own Rng.
+// them used), the unit it drives, and a seed for its own Rng; plus what the robot's owner knows
+// before take-off: the fleet roster (fleet order), its own camera and its collision radius.
 struct StrategyContext {
   const Config& config;
   std::string strategyName;
@@ -31,6 +32,9 @@ struct StrategyContext {
   Role role = Role::Photographer;
   size_t unitIndex = 0;
   uint64_t seed = 0;
+  std::vector<FleetMember> fleet;
+  CameraInfo camera;
+  double collisionRadius = 0.0;  // m; 0 for a ground station
 };
 
 using StrategyFactory = std::function<std::unique_ptr<Strategy>(const StrategyContext&)>;

@@ -31,6 +31,8 @@ struct RunReportTiming {
   uint64_t decisions = 0;
   double decisionTimeMean = 0.0;  // s
   double decisionTimeMax = 0.0;   // s
+  double decisionTimeP50 = 0.0;   // s
+  double decisionTimeP95 = 0.0;   // s
 };
 
 struct RunReport {

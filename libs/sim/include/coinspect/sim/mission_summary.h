@@ -38,9 +38,12 @@ struct StageTimes {
 // Wall-clock time of Strategy::decide calls: in latency mode, the delays of their commands.
 struct DecisionTimes {
   uint64_t count = 0;
-  double total = 0.0;  // s
-  double max = 0.0;    // s
+  double total = 0.0;          // s
+  double max = 0.0;            // s
+  std::vector<float> samples;  // s, one per decision (the percentiles need them all)
   double mean() const { return count ? total / static_cast<double>(count) : 0.0; }
+  // The q-quantile (0 <= q <= 1, nearest rank) of the compute time per decision, s; 0 if none.
+  double quantile(double q) const;
 };
 
 struct MissionSummary {

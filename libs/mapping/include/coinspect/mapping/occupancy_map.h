@@ -1,0 +1,99 @@
+// One robot's occupancy memory: an octomap::OcTree fed by its own LiDAR sweeps and by the key
+// frames it received, with the queries planners need. Owned directly (not through MRPT's
+// COctoMap, see the MRPT field notes). Every query is deterministic and independent of the
+// order in which equal information arrived only as far as OctoMap's log-odds clamping allows.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "coinspect/mapping/voxel_grid.h"
+
+namespace octomap {
+class OcTree;
+}
+
+namespace coinspect::mapping {
+
+class BatchOcTree;  // src/batch_octree.h: the OcTree with the batched update
+
+struct OccupancyMapOptions {
+  double resolution = 0.5;  // m, leaf size
+  double maxRange = 30.0;   // m; returns farther away only clear free space up to this range
+};
+
+// A free cell of the map next to unknown space (what exploration is after).
+struct FrontierCluster {
+  std::vector<Vec3> cells;  // centres, deterministic order
+  Vec3 centroid = Vec3::Zero();
+};
+
+// An occupied cell next to free space, with an outward normal estimated from its neighbourhood.
+struct SurfaceVoxel {
+  Vec3 centre = Vec3::Zero();
+  Vec3 normal = Vec3::UnitZ();  // unit, pointing into free space
+};
+
+class OccupancyMap {
+ public:
+  explicit OccupancyMap(const OccupancyMapOptions& options = {});
+  ~OccupancyMap();
+  OccupancyMap(OccupancyMap&&) noexcept;
+  OccupancyMap& operator=(OccupancyMap&&) noexcept;
+  OccupancyMap(const OccupancyMap&) = delete;
+  OccupancyMap& operator=(const OccupancyMap&) = delete;
+
+  const OccupancyMapOptions& options() const { return options_; }
+
+  // Inserts one scan (points in the world frame, returns only) taken from `origin`: cells along
+  // each ray become more likely free, end cells more likely occupied; each cell is updated once
+  // per scan. Used for own sweeps and for received key frames alike. Points beyond the tree's
+  // extent (+-16 km at 0.5 m) are skipped; a non-finite point or origin is a bug (assert).
+  void insertScan(const Vec3& origin, const std::vector<Eigen::Vector3f>& worldPoints);
+  // Adds every known cell of `other` (same resolution required) as one observation each.
+  void merge(const OccupancyMap& other);
+  // One free observation for the cell of each of `freePoints`, one occupied observation for the
+  // cell of each of `occupiedPoints` (occupied wins for a cell in both), as one scan would give:
+  // for synthetic maps (tests, planners' fixtures).
+  void observeCells(const std::vector<Vec3>& freePoints, const std::vector<Vec3>& occupiedPoints);
+
+  CellState state(const Vec3& point) const;
+  // Distance (m) from `point` to the nearest occupied cell centre, `maxDistance` if none nearer.
+  double clearance(const Vec3& point, double maxDistance) const;
+  // A dense snapshot of [min, max] at `resolution` (a multiple of the map's works best), for
+  // path search; a dense cell is Occupied if any map leaf inside it is, else Free if any is, else
+  // Unknown.
+  VoxelGrid toVoxelGrid(const Vec3& min, const Vec3& max, double resolution) const;
+
+  // Free cells with an unknown face neighbour inside [min, max], grouped by 26-connectivity into
+  // clusters of at least `minClusterSize` cells; deterministic order.
+  std::vector<FrontierCluster> frontierClusters(const Vec3& min, const Vec3& max,
+                                                size_t minClusterSize) const;
+  // Occupied cells with a free face neighbour inside [min, max], deterministic order.
+  std::vector<SurfaceVoxel> surfaceVoxels(const Vec3& min, const Vec3& max) const;
+
+  size_t occupiedCount() const;
+  size_t knownCount() const;
+  // Centre of the map cell holding `point` (cells are cubes of the resolution aligned with 0).
+  Vec3 cellCentre(const Vec3& point) const;
+  // Bumped by every insertScan/merge: lets callers rebuild derived grids only when needed.
+  uint64_t revision() const { return revision_; }
+
+  const octomap::OcTree& octree() const { return *tree_; }
+
+ private:
+  // Sorts and deduplicates the update codes in scratch_ (occupied wins) and applies them.
+  void applyScratch();
+
+  OccupancyMapOptions options_;
+  std::unique_ptr<octomap::OcTree> tree_;  // a BatchOcTree (src/batch_octree.h)
+  BatchOcTree* batch_ = nullptr;           // the same object, with the batched update
+  std::vector<uint64_t> scratch_;          // update codes of the current scan (reused)
+  std::vector<uint64_t> sortBuffer_;       // radix sort buffer (reused)
+  uint64_t revision_ = 0;
+};
+
+}  // namespace coinspect::mapping

@@ -1,0 +1,68 @@
+// A dense, axis-aligned snapshot of a robot's occupancy over a bounded region, for path search.
+// The octree (OccupancyMap) is the robot's memory; planners query this grid instead because a
+// dense array lookup is ~100x cheaper than an octree descent and A* touches millions of cells.
+// The clearance field holds, per cell, the Euclidean distance (m) from the cell centre to the
+// nearest blocked cell centre (occupied, and unknown when the caller said so), capped.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace coinspect::mapping {
+
+using Vec3 = Eigen::Vector3d;
+using Index3 = Eigen::Vector3i;
+
+enum class CellState : uint8_t { Unknown = 0, Free = 1, Occupied = 2 };
+
+class VoxelGrid {
+ public:
+  VoxelGrid() = default;
+  // `origin` is the minimum corner of cell (0, 0, 0); every size component must be >= 1.
+  VoxelGrid(const Vec3& origin, double resolution, const Index3& size,
+            CellState fill = CellState::Unknown);
+
+  const Vec3& origin() const { return origin_; }
+  double resolution() const { return resolution_; }
+  const Index3& size() const { return size_; }
+  size_t cellCount() const { return states_.size(); }
+
+  bool contains(const Index3& cell) const {
+    return (cell.array() >= 0).all() && (cell.array() < size_.array()).all();
+  }
+  Index3 cellOf(const Vec3& point) const;  // may lie outside: check contains()
+  Vec3 centre(const Index3& cell) const {
+    return origin_ + (cell.cast<double>().array() + 0.5).matrix() * resolution_;
+  }
+  size_t linear(const Index3& cell) const {
+    return (static_cast<size_t>(cell.z()) * size_.y() + cell.y()) * size_.x() + cell.x();
+  }
+
+  // Cells outside the grid read as Unknown.
+  CellState state(const Index3& cell) const {
+    return contains(cell) ? states_[linear(cell)] : CellState::Unknown;
+  }
+  void set(const Index3& cell, CellState state) { states_[linear(cell)] = state; }
+
+  // Recomputes the clearance field (exact Euclidean distance transform, capped at `cap` m).
+  // Occupied cells always block; unknown cells block when `unknownBlocks`; outside the grid
+  // nothing blocks. Cost O(cells).
+  void computeClearance(double cap, bool unknownBlocks);
+  bool hasClearance() const { return !clearance_.empty(); }
+  // Distance (m) to the nearest blocking cell centre; 0 on blocking cells, `cap` when none is
+  // nearer. Cells outside the grid: 0. Requires computeClearance().
+  float clearance(const Index3& cell) const {
+    return contains(cell) ? clearance_[linear(cell)] : 0.0f;
+  }
+
+ private:
+  Vec3 origin_ = Vec3::Zero();
+  double resolution_ = 1.0;
+  Index3 size_ = Index3::Zero();
+  std::vector<CellState> states_;
+  std::vector<float> clearance_;
+};
+
+}  // namespace coinspect::mapping

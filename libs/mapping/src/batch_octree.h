@@ -1,0 +1,69 @@
+// Internal: an octomap::OcTree that applies a whole batch of cell updates in one depth-first
+// descent. OctoMap's own updateNode searches the tree and then descends it again for every cell
+// (two 16-level walks per cell) and, unless lazy, refreshes the inner nodes of the path each
+// time; here the updates are sorted by Morton code (the tree's depth-first order), so every node
+// on the way is visited once per batch and its inner occupancy (max of its children) is
+// refreshed once, on the way back up. The inner nodes are therefore always current: queries may
+// prune subtrees by their inner value without an updateInnerOccupancy() pass.
+//
+// The tree is never pruned (it would make leaves of different sizes and cost a check per
+// update); OccupancyMap owns it and exposes it only as const.
+#pragma once
+
+#include <octomap/OcTree.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace coinspect::mapping {
+
+// An update code is (Morton code of the leaf key) << 1 | occupied. The Morton code interleaves
+// the 16-bit key components with x in the lowest bit of each triple, so its 3-bit groups from the
+// top are OctoMap's child indices from the root down (computeChildIdx).
+inline uint64_t spreadBits16(uint64_t v) {
+  v &= 0xffffULL;
+  v = (v | (v << 16)) & 0x0000ff0000ffULL;
+  v = (v | (v << 8)) & 0x00f00f00f00fULL;
+  v = (v | (v << 4)) & 0x0c30c30c30c3ULL;
+  v = (v | (v << 2)) & 0x249249249249ULL;
+  return v;
+}
+
+inline uint64_t mortonOf(const octomap::OcTreeKey& key) {
+  return spreadBits16(key[0]) | (spreadBits16(key[1]) << 1) | (spreadBits16(key[2]) << 2);
+}
+
+inline uint64_t updateCode(const octomap::OcTreeKey& key, bool occupied) {
+  return (mortonOf(key) << 1) | (occupied ? 1U : 0U);
+}
+
+// Sorts `codes` ascending (LSD radix sort, 11-bit digits, passes whose digit is constant
+// skipped), removes repeated cells keeping the occupied code of a cell when there is one.
+void sortUniqueCodes(std::vector<uint64_t>& codes, std::vector<uint64_t>& buffer);
+
+class BatchOcTree : public octomap::OcTree {
+ public:
+  explicit BatchOcTree(double resolution) : octomap::OcTree(resolution) {}
+
+  // Applies one hit or miss to each cell of `codes` (sorted ascending, one code per cell).
+  void applySorted(const std::vector<uint64_t>& codes);
+
+  // Appends one update code per leaf (occupied or free as the leaf is), in ascending order: the
+  // depth-first walk in child-index order is the Morton order.
+  void appendLeafCodes(std::vector<uint64_t>& codes) const;
+
+  size_t knownCells() const { return known_; }
+  size_t occupiedCells() const { return occupied_; }
+
+ private:
+  void descend(octomap::OcTreeNode* node, bool justCreated, unsigned depth, const uint64_t* begin,
+               const uint64_t* end);
+  void appendLeafCodes(const octomap::OcTreeNode* node, unsigned depth, uint64_t morton,
+                       std::vector<uint64_t>& codes) const;
+
+  size_t known_ = 0;     // leaves (each a cell: the tree is never pruned)
+  size_t occupied_ = 0;  // leaves with log-odds >= the occupancy threshold
+};
+
+}  // namespace coinspect::mapping

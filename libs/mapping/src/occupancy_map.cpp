@@ -1,0 +1,151 @@
+// OccupancyMap: construction, insertion of scans, merging, per-cell state.
+#include "coinspect/mapping/occupancy_map.h"
+
+#include <cmath>
+
+#include "batch_octree.h"
+#include "coinspect/core/error.h"
+
+namespace coinspect::mapping {
+
+namespace {
+
+inline octomap::point3d toPoint(const Vec3& v) {
+  return octomap::point3d(static_cast<float>(v.x()), static_cast<float>(v.y()),
+                          static_cast<float>(v.z()));
+}
+
+// The double overload: no rounding of the coordinates to float before the cell is chosen.
+inline bool keyOf(const octomap::OcTree& tree, const Vec3& p, octomap::OcTreeKey& key) {
+  return p.allFinite() && tree.coordToKeyChecked(p.x(), p.y(), p.z(), key);
+}
+
+inline uint64_t compactBits16(uint64_t v) {
+  v &= 0x249249249249ULL;
+  v = (v | (v >> 2)) & 0x0c30c30c30c3ULL;
+  v = (v | (v >> 4)) & 0x00f00f00f00fULL;
+  v = (v | (v >> 8)) & 0x0000ff0000ffULL;
+  v = (v | (v >> 16)) & 0xffffULL;
+  return v;
+}
+
+inline octomap::OcTreeKey keyOfCode(uint64_t code) {
+  const uint64_t morton = code >> 1;
+  return octomap::OcTreeKey(static_cast<octomap::key_type>(compactBits16(morton)),
+                            static_cast<octomap::key_type>(compactBits16(morton >> 1)),
+                            static_cast<octomap::key_type>(compactBits16(morton >> 2)));
+}
+
+}  // namespace
+
+OccupancyMap::OccupancyMap(const OccupancyMapOptions& options) : options_(options) {
+  // Options come from code or from a strategy's validated config: bad values are bugs here.
+  COINSPECT_ASSERT(options.resolution > 0.0 && std::isfinite(options.resolution));
+  COINSPECT_ASSERT(options.maxRange > 0.0);
+  auto tree = std::make_unique<BatchOcTree>(options.resolution);
+  batch_ = tree.get();
+  tree_ = std::move(tree);
+}
+
+OccupancyMap::~OccupancyMap() = default;
+OccupancyMap::OccupancyMap(OccupancyMap&&) noexcept = default;
+OccupancyMap& OccupancyMap::operator=(OccupancyMap&&) noexcept = default;
+
+void OccupancyMap::insertScan(const Vec3& origin, const std::vector<Eigen::Vector3f>& worldPoints) {
+  ++revision_;
+  // OctoMap's computeRayKeys needs a KeyRay, whose constructor allocates room for 100,000 keys:
+  // keep one per thread rather than one per call.
+  thread_local octomap::KeyRay keyRay;
+  const octomap::point3d sensor = toPoint(origin);
+  octomap::OcTreeKey key;
+  COINSPECT_ASSERT(keyOf(*tree_, origin, key));
+
+  // 1. The end cell of every ray: the return's cell (occupied) or, for a return beyond the range
+  // cap, the cell at the cap (free space only). Rays to the same end cell clear the same cells
+  // once cast to its centre (OctoMap's `discretize`), so the distinct end cells are cast only.
+  std::vector<uint64_t> ends;
+  ends.reserve(worldPoints.size());
+  for (const auto& p : worldPoints) {
+    COINSPECT_ASSERT(p.allFinite());
+    const Vec3 offset = p.cast<double>() - origin;
+    const double range = offset.norm();
+    const bool capped = range > options_.maxRange;
+    const Vec3 end =
+        capped ? Vec3(origin + offset * (options_.maxRange / range)) : p.cast<double>();
+    if (!keyOf(*tree_, end, key)) continue;  // beyond the tree's extent
+    ends.push_back(updateCode(key, !capped));
+  }
+  sortUniqueCodes(ends, sortBuffer_);
+
+  // 2. Free cells along every distinct ray (the end cell excluded), then the occupied ends. Rays
+  // from one origin share most cells near it: a direct-mapped table of recent codes drops most
+  // repeats before the sort (exact repeats only, so the result is the same, just cheaper).
+  constexpr int kFilterBits = 13;
+  thread_local std::vector<uint64_t> recent;
+  recent.assign(size_t{1} << kFilterBits, ~uint64_t{0});
+  scratch_.clear();
+  for (const uint64_t end : ends) {
+    const octomap::OcTreeKey endKey = keyOfCode(end);
+    if (tree_->computeRayKeys(sensor, tree_->keyToCoord(endKey), keyRay)) {
+      for (const auto& free : keyRay) {
+        const uint64_t code = updateCode(free, false);
+        uint64_t& slot = recent[(code * 0x9E3779B97F4A7C15ULL) >> (64 - kFilterBits)];
+        if (slot == code) continue;
+        slot = code;
+        scratch_.push_back(code);
+      }
+    }
+    if (end & 1U) scratch_.push_back(end);
+  }
+  applyScratch();
+}
+
+void OccupancyMap::merge(const OccupancyMap& other) {
+  COINSPECT_ASSERT(other.tree_->getResolution() == tree_->getResolution());
+  ++revision_;
+  std::vector<uint64_t> codes;  // not scratch_: `other` may be this map
+  codes.reserve(other.batch_->knownCells());
+  other.batch_->appendLeafCodes(codes);  // already sorted, one per cell
+  batch_->applySorted(codes);
+}
+
+void OccupancyMap::observeCells(const std::vector<Vec3>& freePoints,
+                                const std::vector<Vec3>& occupiedPoints) {
+  ++revision_;
+  scratch_.clear();
+  octomap::OcTreeKey key;
+  for (const auto& p : freePoints)
+    if (keyOf(*tree_, p, key)) scratch_.push_back(updateCode(key, false));
+  for (const auto& p : occupiedPoints)
+    if (keyOf(*tree_, p, key)) scratch_.push_back(updateCode(key, true));
+  applyScratch();
+}
+
+void OccupancyMap::applyScratch() {
+  sortUniqueCodes(scratch_, sortBuffer_);
+  batch_->applySorted(scratch_);
+}
+
+CellState OccupancyMap::state(const Vec3& point) const {
+  octomap::OcTreeKey key;
+  if (!keyOf(*tree_, point, key)) return CellState::Unknown;
+  const octomap::OcTreeNode* node = tree_->search(key);
+  if (node == nullptr) return CellState::Unknown;
+  return tree_->isNodeOccupied(node) ? CellState::Occupied : CellState::Free;
+}
+
+Vec3 OccupancyMap::cellCentre(const Vec3& point) const {
+  octomap::OcTreeKey key;
+  COINSPECT_ASSERT(keyOf(*tree_, point, key));
+  return Vec3(tree_->keyToCoord(key[0]), tree_->keyToCoord(key[1]), tree_->keyToCoord(key[2]));
+}
+
+size_t OccupancyMap::occupiedCount() const {
+  return batch_->occupiedCells();
+}
+
+size_t OccupancyMap::knownCount() const {
+  return batch_->knownCells();
+}
+
+}  // namespace coinspect::mapping

@@ -1,0 +1,257 @@
+// OccupancyMap queries: clearance, dense snapshots, frontier clusters, surface voxels.
+//
+// All of them walk the octree depth first from the root and skip whole subtrees by their key
+// box (outside the region asked for) or by their inner value: the batched update keeps every
+// inner node at the maximum log-odds of its children (batch_octree.h), so a subtree whose root is
+// not occupied holds no occupied cell.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "batch_octree.h"
+#include "coinspect/core/error.h"
+#include "coinspect/mapping/occupancy_map.h"
+
+namespace coinspect::mapping {
+
+namespace {
+
+using Key3 = Eigen::Array3i;  // key coordinates of a node's minimum corner (0..65535)
+
+// The keys of a node's child `index` (OctoMap's computeChildIdx: x bit 0, y bit 1, z bit 2).
+inline Key3 childCorner(const Key3& corner, unsigned index, int childSize) {
+  return corner + Key3(index & 1U, (index >> 1) & 1U, (index >> 2) & 1U) * childSize;
+}
+
+struct TreeFrame {
+  const octomap::OcTree& tree;
+  double resolution;
+  int depth;    // tree depth (16)
+  int keyZero;  // key of the cell whose minimum corner is the world origin (32768)
+
+  explicit TreeFrame(const octomap::OcTree& t)
+      : tree(t),
+        resolution(t.getResolution()),
+        depth(static_cast<int>(t.getTreeDepth())),
+        keyZero(static_cast<int>(t.coordToKey(0.0))) {}
+
+  Vec3 corner(const Key3& key) const {
+    return (key - keyZero).cast<double>().matrix() * resolution;
+  }
+};
+
+// Nearest occupied cell centre to q, by branch and bound over the tree.
+void nearestOccupied(const TreeFrame& f, const octomap::OcTreeNode* node, int depth,
+                     const Key3& corner, const Vec3& q, double& best2) {
+  if (!f.tree.isNodeOccupied(node)) return;  // no occupied cell below
+  const int size = 1 << (f.depth - depth);
+  // The cell centres below lie in [lo, hi]: a lower bound of their distance to q.
+  const Vec3 lo = f.corner(corner) + Vec3::Constant(0.5 * f.resolution);
+  const Vec3 hi = lo + Vec3::Constant((size - 1) * f.resolution);
+  const Vec3 gap = (lo - q).cwiseMax(q - hi).cwiseMax(0.0);
+  const double d2 = gap.squaredNorm();
+  if (d2 >= best2) return;
+  if (depth == f.depth) {
+    best2 = d2;
+    return;
+  }
+  for (unsigned i = 0; i < 8; ++i)
+    if (f.tree.nodeChildExists(node, i))
+      nearestOccupied(f, f.tree.getNodeChild(node, i), depth + 1, childCorner(corner, i, size / 2),
+                      q, best2);
+}
+
+// Fills `grid` from the tree: a dense cell is Occupied if a map cell inside it is, else Free if
+// one is known. `stopDepth` < tree depth when the grid's cells are exactly the nodes of that
+// depth (aligned, resolution x 2^k): then a node's inner value already answers for its cell.
+class GridFiller {
+ public:
+  GridFiller(const TreeFrame& frame, VoxelGrid& grid, int stopDepth)
+      : f_(frame), grid_(grid), stopDepth_(stopDepth) {
+    gridMin_ = grid.origin();
+    gridMax_ = grid.origin() + grid.size().cast<double>() * grid.resolution();
+  }
+
+  void visit(const octomap::OcTreeNode* node, int depth, const Key3& corner) {
+    const int size = 1 << (f_.depth - depth);
+    const Vec3 lo = f_.corner(corner);
+    const Vec3 hi = lo + Vec3::Constant(size * f_.resolution);
+    if ((hi.array() <= gridMin_.array()).any() || (lo.array() >= gridMax_.array()).any()) return;
+    if (depth == stopDepth_ || !f_.tree.nodeHasChildren(node)) {
+      const CellState state = f_.tree.isNodeOccupied(node) ? CellState::Occupied : CellState::Free;
+      if (size * f_.resolution <= grid_.resolution() * (1.0 + 1e-9)) {
+        const Index3 cell = grid_.cellOf(lo + Vec3::Constant(0.5 * size * f_.resolution));
+        if (grid_.contains(cell)) combine(cell, state);
+        return;
+      }
+      // A node larger than a dense cell: every dense cell whose centre it holds.
+      const Index3 first = grid_.cellOf(lo).cwiseMax(Index3::Zero());
+      const Index3 last = grid_.cellOf(hi).cwiseMin(grid_.size() - Index3::Ones());
+      for (int z = first.z(); z <= last.z(); ++z)
+        for (int y = first.y(); y <= last.y(); ++y)
+          for (int x = first.x(); x <= last.x(); ++x) {
+            const Index3 cell(x, y, z);
+            const Vec3 c = grid_.centre(cell);
+            if ((c.array() >= lo.array()).all() && (c.array() < hi.array()).all())
+              combine(cell, state);
+          }
+      return;
+    }
+    for (unsigned i = 0; i < 8; ++i)
+      if (f_.tree.nodeChildExists(node, i))
+        visit(f_.tree.getNodeChild(node, i), depth + 1, childCorner(corner, i, size / 2));
+  }
+
+ private:
+  void combine(const Index3& cell, CellState state) {
+    const CellState now = grid_.state(cell);
+    if (state == CellState::Occupied || now == CellState::Unknown) grid_.set(cell, state);
+  }
+
+  const TreeFrame& f_;
+  VoxelGrid& grid_;
+  int stopDepth_;
+  Vec3 gridMin_, gridMax_;
+};
+
+void fillGrid(const octomap::OcTree& tree, VoxelGrid& grid) {
+  const TreeFrame frame(tree);
+  // Aligned grids of resolution x 2^k stop k levels above the leaves.
+  int stopDepth = frame.depth;
+  const double ratio = grid.resolution() / frame.resolution;
+  const int k = static_cast<int>(std::lround(std::log2(ratio)));
+  if (k > 0 && k < frame.depth && std::abs(ratio - std::ldexp(1.0, k)) < 1e-9 * ratio) {
+    const Vec3 steps = grid.origin() / grid.resolution();
+    if (((steps.array() - steps.array().round()).abs() < 1e-6).all()) stopDepth = frame.depth - k;
+  }
+  if (tree.getRoot() == nullptr) return;
+  GridFiller(frame, grid, stopDepth).visit(tree.getRoot(), 0, Key3::Zero());
+}
+
+// The map cells overlapping [min, max] plus a margin of one cell, as a dense grid at the map's
+// resolution aligned with its cells; region cells are those not on the grid's border.
+VoxelGrid regionGrid(const octomap::OcTree& tree, const Vec3& min, const Vec3& max) {
+  COINSPECT_ASSERT((min.array() <= max.array()).all());
+  const double r = tree.getResolution();
+  const Index3 first = (min / r).array().floor().cast<int>() - 1;
+  const Index3 last = (max / r).array().floor().cast<int>() + 1;
+  VoxelGrid grid(first.cast<double>() * r, r, last - first + Index3::Ones());
+  fillGrid(tree, grid);
+  return grid;
+}
+
+// Face neighbours in a fixed order (-x, +x, -y, +y, -z, +z).
+const std::array<Index3, 6> kFaces = {Index3(-1, 0, 0), Index3(1, 0, 0),  Index3(0, -1, 0),
+                                      Index3(0, 1, 0),  Index3(0, 0, -1), Index3(0, 0, 1)};
+
+}  // namespace
+
+double OccupancyMap::clearance(const Vec3& point, double maxDistance) const {
+  COINSPECT_ASSERT(maxDistance >= 0.0);
+  const octomap::OcTreeNode* root = tree_->getRoot();
+  if (root == nullptr) return maxDistance;
+  double best2 = maxDistance * maxDistance;
+  nearestOccupied(TreeFrame(*tree_), root, 0, Key3::Zero(), point, best2);
+  return std::min(std::sqrt(best2), maxDistance);
+}
+
+VoxelGrid OccupancyMap::toVoxelGrid(const Vec3& min, const Vec3& max, double resolution) const {
+  COINSPECT_ASSERT(resolution > 0.0 && (min.array() < max.array()).all());
+  const Index3 size = ((max - min) / resolution)
+                          .array()
+                          .unaryExpr([](double v) { return std::ceil(v - 1e-9); })
+                          .cast<int>()
+                          .cwiseMax(1);
+  VoxelGrid grid(min, resolution, size);
+  fillGrid(*tree_, grid);
+  return grid;
+}
+
+std::vector<FrontierCluster> OccupancyMap::frontierClusters(const Vec3& min, const Vec3& max,
+                                                            size_t minClusterSize) const {
+  const VoxelGrid grid = regionGrid(*tree_, min, max);
+  const Index3 size = grid.size();
+  std::vector<uint8_t> mark(grid.cellCount(), 0);  // 1 = frontier, 2 = already clustered
+  for (int z = 1; z < size.z() - 1; ++z)
+    for (int y = 1; y < size.y() - 1; ++y)
+      for (int x = 1; x < size.x() - 1; ++x) {
+        const Index3 cell(x, y, z);
+        if (grid.state(cell) != CellState::Free) continue;
+        for (const auto& face : kFaces)
+          if (grid.state(cell + face) == CellState::Unknown) {
+            mark[grid.linear(cell)] = 1;
+            break;
+          }
+      }
+  // 26-connected components in ascending (z, y, x) order of their first cell.
+  std::vector<FrontierCluster> clusters;
+  std::vector<Index3> stack, members;
+  const auto interior = [&](const Index3& c) {
+    return (c.array() >= 1).all() && (c.array() < size.array() - 1).all();
+  };
+  for (int z = 1; z < size.z() - 1; ++z)
+    for (int y = 1; y < size.y() - 1; ++y)
+      for (int x = 1; x < size.x() - 1; ++x) {
+        const Index3 seed(x, y, z);
+        if (mark[grid.linear(seed)] != 1) continue;
+        members.clear();
+        stack.assign(1, seed);
+        mark[grid.linear(seed)] = 2;
+        while (!stack.empty()) {
+          const Index3 cell = stack.back();
+          stack.pop_back();
+          members.push_back(cell);
+          for (int dz = -1; dz <= 1; ++dz)
+            for (int dy = -1; dy <= 1; ++dy)
+              for (int dx = -1; dx <= 1; ++dx) {
+                const Index3 next = cell + Index3(dx, dy, dz);
+                if (!interior(next) || mark[grid.linear(next)] != 1) continue;
+                mark[grid.linear(next)] = 2;
+                stack.push_back(next);
+              }
+        }
+        if (members.size() < minClusterSize) continue;
+        std::sort(members.begin(), members.end(), [&](const Index3& a, const Index3& b) {
+          return grid.linear(a) < grid.linear(b);
+        });
+        FrontierCluster cluster;
+        cluster.cells.reserve(members.size());
+        for (const auto& cell : members) {
+          cluster.cells.push_back(grid.centre(cell));
+          cluster.centroid += cluster.cells.back();
+        }
+        cluster.centroid /= static_cast<double>(members.size());
+        clusters.push_back(std::move(cluster));
+      }
+  return clusters;
+}
+
+std::vector<SurfaceVoxel> OccupancyMap::surfaceVoxels(const Vec3& min, const Vec3& max) const {
+  const VoxelGrid grid = regionGrid(*tree_, min, max);
+  const Index3 size = grid.size();
+  std::vector<SurfaceVoxel> surface;
+  for (int z = 1; z < size.z() - 1; ++z)
+    for (int y = 1; y < size.y() - 1; ++y)
+      for (int x = 1; x < size.x() - 1; ++x) {
+        const Index3 cell(x, y, z);
+        if (grid.state(cell) != CellState::Occupied) continue;
+        // Normal: the sum of the directions toward free face neighbours. Exact on flat faces
+        // (the axis), the bisector on edges and corners; a cell free on two opposite sides (a
+        // wall one cell thick seen from both) keeps the first free direction in face order.
+        Vec3 sum = Vec3::Zero();
+        const Index3* firstFree = nullptr;
+        for (const auto& face : kFaces)
+          if (grid.state(cell + face) == CellState::Free) {
+            sum += face.cast<double>();
+            if (firstFree == nullptr) firstFree = &face;
+          }
+        if (firstFree == nullptr) continue;
+        SurfaceVoxel voxel;
+        voxel.centre = grid.centre(cell);
+        voxel.normal = sum.squaredNorm() > 0.0 ? sum.normalized() : firstFree->cast<double>();
+        surface.push_back(voxel);
+      }
+  return surface;
+}
+
+}  // namespace coinspect::mapping

@@ -1,0 +1,314 @@
+#include "coinspect/mapping/occupancy_map.h"
+
+#include <gtest/gtest.h>
+#include <octomap/OcTree.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+namespace coinspect::mapping {
+namespace {
+
+using Points = std::vector<Eigen::Vector3f>;
+
+// Points of the plane x = `x` over [-half, half]^2 in y and z (offset by `centre`), every `step`.
+Points wallAt(double x, const Vec3& centre, double half, double step) {
+  Points points;
+  for (double y = -half; y <= half + 1e-9; y += step)
+    for (double z = -half; z <= half + 1e-9; z += step)
+      points.emplace_back(static_cast<float>(x), static_cast<float>(centre.y() + y),
+                          static_cast<float>(centre.z() + z));
+  return points;
+}
+
+// A floor (z = 0.25) seen from `origin`: points on a polar pattern around it.
+Points floorAround(const Vec3& origin, double radius) {
+  Points points;
+  for (double r = 1.0; r <= radius; r += 0.4)
+    for (int a = 0; a < 90; ++a) {
+      const double angle = 2.0 * M_PI * a / 90.0;
+      points.emplace_back(static_cast<float>(origin.x() + r * std::cos(angle)),
+                          static_cast<float>(origin.y() + r * std::sin(angle)), 0.25f);
+    }
+  return points;
+}
+
+// Every leaf as (key, log-odds), in key order: the whole content of a map.
+std::map<std::tuple<int, int, int>, float> leaves(const OccupancyMap& map) {
+  std::map<std::tuple<int, int, int>, float> out;
+  const auto& tree = map.octree();
+  for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it) {
+    EXPECT_EQ(it.getDepth(), tree.getTreeDepth());  // never pruned
+    out[{it.getKey()[0], it.getKey()[1], it.getKey()[2]}] = it->getLogOdds();
+  }
+  return out;
+}
+
+TEST(OccupancyMap, WallScanIsOccupiedFreeInFrontUnknownBehind) {
+  OccupancyMap map({0.5, 30.0});
+  const Vec3 origin(0.1, 0.2, 1.3);
+  const Points wall = wallAt(10.25, origin, 3.0, 0.05);
+  map.insertScan(origin, wall);
+  EXPECT_EQ(map.revision(), 1U);
+  for (double y = -2.0; y <= 2.0; y += 0.5)
+    for (double z = -2.0; z <= 2.0; z += 0.5) {
+      const Vec3 onWall(10.25, origin.y() + y, origin.z() + z);
+      EXPECT_EQ(map.state(onWall), CellState::Occupied) << y << " " << z;
+      for (const double t : {0.05, 0.3, 0.6, 0.9})
+        EXPECT_EQ(map.state(origin + t * (onWall - origin)), CellState::Free) << t;
+      EXPECT_EQ(map.state(onWall + Vec3(0.5, 0, 0)), CellState::Unknown);
+      EXPECT_EQ(map.state(onWall + Vec3(3.0, 0, 0)), CellState::Unknown);
+    }
+  EXPECT_EQ(map.state(Vec3(-3.0, 0.2, 1.3)), CellState::Unknown);  // behind the sensor
+  // The wall is 13 x 13 cells of 0.5 m (6 m of points from y = -2.8 to 3.2 and so on).
+  EXPECT_EQ(map.occupiedCount(), 13U * 13U);
+  size_t occupied = 0;
+  const auto all = leaves(map);
+  for (const auto& [key, logOdds] : all)
+    occupied += logOdds >= 0.0f ? 1 : 0;
+  EXPECT_EQ(occupied, map.occupiedCount());
+  EXPECT_EQ(all.size(), map.knownCount());
+  EXPECT_GT(map.knownCount(), 13U * 13U * 5U);  // the free pyramid in front of the wall
+}
+
+TEST(OccupancyMap, ReturnsBeyondTheRangeCapOnlyClearUpToTheCap) {
+  OccupancyMap map({0.5, 5.0});
+  const Vec3 origin(0.1, 0.2, 1.3);
+  map.insertScan(origin, wallAt(10.25, origin, 1.0, 0.1));
+  EXPECT_EQ(map.occupiedCount(), 0U);
+  EXPECT_EQ(map.state(Vec3(2.0, 0.2, 1.3)), CellState::Free);
+  EXPECT_EQ(map.state(Vec3(4.25, 0.2, 1.3)), CellState::Free);
+  EXPECT_EQ(map.state(Vec3(5.75, 0.2, 1.3)), CellState::Unknown);
+  EXPECT_EQ(map.state(Vec3(10.25, 0.2, 1.3)), CellState::Unknown);
+  // A return inside the cap still marks its cell occupied.
+  map.insertScan(origin, {Eigen::Vector3f(4.25f, 0.2f, 1.3f)});
+  EXPECT_EQ(map.state(Vec3(4.25, 0.2, 1.3)), CellState::Occupied);
+}
+
+TEST(OccupancyMap, EachCellIsUpdatedOncePerScanWhateverThePointOrder) {
+  const Vec3 origin(0.1, 0.2, 1.3);
+  Points scan = wallAt(8.25, origin, 2.0, 0.05);
+  const Points floor = floorAround(origin, 7.0);
+  scan.insert(scan.end(), floor.begin(), floor.end());
+  OccupancyMap a({0.5, 30.0}), b({0.5, 30.0});
+  a.insertScan(origin, scan);
+  std::reverse(scan.begin(), scan.end());
+  b.insertScan(origin, scan);
+  EXPECT_EQ(leaves(a), leaves(b));
+  // One observation per cell: the log-odds of a single hit or miss, never more.
+  const float hit = a.octree().getProbHitLog(), miss = a.octree().getProbMissLog();
+  for (const auto& [key, logOdds] : leaves(a))
+    EXPECT_TRUE(logOdds == hit || logOdds == miss) << logOdds;
+}
+
+TEST(OccupancyMap, MergeOfTwoHalfMapsEqualsTheMapOfBothScans) {
+  const Vec3 first(0.1, 0.2, 1.3), second(3.7, -2.4, 2.1);
+  Points scan1 = wallAt(8.25, first, 3.0, 0.07), scan2 = wallAt(9.75, second, 3.0, 0.07);
+  for (const auto& p : floorAround(first, 6.0))
+    scan1.push_back(p);
+  for (const auto& p : floorAround(second, 6.0))
+    scan2.push_back(p);
+  OccupancyMap both({0.5, 30.0}), half1({0.5, 30.0}), half2({0.5, 30.0});
+  both.insertScan(first, scan1);
+  both.insertScan(second, scan2);
+  half1.insertScan(first, scan1);
+  half2.insertScan(second, scan2);
+  const uint64_t before = half1.revision();
+  half1.merge(half2);
+  EXPECT_GT(half1.revision(), before);
+  const auto expected = leaves(both), merged = leaves(half1);
+  ASSERT_EQ(expected.size(), merged.size());
+  for (const auto& [key, logOdds] : expected) {
+    const auto it = merged.find(key);
+    ASSERT_NE(it, merged.end());
+    EXPECT_EQ(logOdds >= 0.0f, it->second >= 0.0f);  // the state of every cell
+    EXPECT_FLOAT_EQ(logOdds, it->second);
+  }
+  EXPECT_EQ(both.occupiedCount(), half1.occupiedCount());
+  EXPECT_EQ(both.knownCount(), half1.knownCount());
+}
+
+TEST(OccupancyMap, MergingAMapIntoItselfRepeatsEveryObservation) {
+  OccupancyMap map({0.5, 30.0});
+  const Vec3 origin(0.1, 0.2, 1.3);
+  map.insertScan(origin, wallAt(6.25, origin, 2.0, 0.1));
+  const auto before = leaves(map);
+  const size_t known = map.knownCount(), occupied = map.occupiedCount();
+  map.merge(map);
+  const auto after = leaves(map);
+  ASSERT_EQ(after.size(), before.size());
+  const float hit = map.octree().getProbHitLog(), miss = map.octree().getProbMissLog();
+  for (const auto& [key, logOdds] : before)
+    EXPECT_FLOAT_EQ(after.at(key), logOdds + (logOdds >= 0.0f ? hit : miss));
+  EXPECT_EQ(map.knownCount(), known);
+  EXPECT_EQ(map.occupiedCount(), occupied);
+}
+
+TEST(OccupancyMapDeathTest, MergeRequiresTheSameResolution) {
+  OccupancyMap fine({0.5, 30.0}), coarse({1.0, 30.0});
+  EXPECT_DEATH(fine.merge(coarse), "getResolution");
+}
+
+// Free cells at res 1.0: cube A (3 x 3 x 3 at the origin) with an occupied wall on its -x side,
+// cube B (2 x 2 x 2 at x = 10), and one lone free cell at x = 20.
+OccupancyMap frontierScene() {
+  OccupancyMap map({1.0, 30.0});
+  std::vector<Vec3> freeCells, occupiedCells;
+  for (int z = 0; z < 3; ++z)
+    for (int y = 0; y < 3; ++y)
+      for (int x = 0; x < 3; ++x)
+        freeCells.emplace_back(x + 0.5, y + 0.5, z + 0.5);
+  for (int z = 0; z < 2; ++z)
+    for (int y = 0; y < 2; ++y)
+      for (int x = 0; x < 2; ++x)
+        freeCells.emplace_back(10.5 + x, y + 0.5, z + 0.5);
+  freeCells.emplace_back(20.5, 0.5, 0.5);
+  for (int z = -1; z < 4; ++z)
+    for (int y = -1; y < 4; ++y)
+      occupiedCells.emplace_back(-0.5, y + 0.5, z + 0.5);
+  map.observeCells(freeCells, occupiedCells);
+  return map;
+}
+
+TEST(OccupancyMap, FrontierClustersOfASyntheticScene) {
+  const OccupancyMap map = frontierScene();
+  const auto clusters = map.frontierClusters(Vec3(-5, -5, -5), Vec3(25, 5, 5), 2);
+  ASSERT_EQ(clusters.size(), 2U);
+  // Cube A: all 27 cells but its centre (every face neighbour free) and the centre of its -x
+  // face (the wall, four free neighbours, nothing unknown): 25 cells.
+  EXPECT_EQ(clusters[0].cells.size(), 25U);
+  const Vec3 expectedA =
+      (27.0 * Vec3(1.5, 1.5, 1.5) - Vec3(1.5, 1.5, 1.5) - Vec3(0.5, 1.5, 1.5)) / 25.0;
+  EXPECT_LT((clusters[0].centroid - expectedA).norm(), 1e-12);
+  EXPECT_EQ(clusters[1].cells.size(), 8U);
+  EXPECT_LT((clusters[1].centroid - Vec3(11.0, 1.0, 1.0)).norm(), 1e-12);
+  EXPECT_TRUE(std::is_sorted(
+      clusters[0].cells.begin(), clusters[0].cells.end(), [](const Vec3& a, const Vec3& b) {
+        return std::make_tuple(a.z(), a.y(), a.x()) < std::make_tuple(b.z(), b.y(), b.x());
+      }));
+  // The lone cell is a cluster of one; a region around cube B sees only B.
+  EXPECT_EQ(map.frontierClusters(Vec3(-5, -5, -5), Vec3(25, 5, 5), 1).size(), 3U);
+  const auto onlyB = map.frontierClusters(Vec3(9, -1, -1), Vec3(13, 3, 3), 1);
+  ASSERT_EQ(onlyB.size(), 1U);
+  EXPECT_EQ(onlyB[0].cells.size(), 8U);
+}
+
+// An axis-aligned box seen from far away along each axis: face cells of 0.5 m from 2.0 to 6.0.
+TEST(OccupancyMap, SurfaceVoxelsOfABoxHaveOutwardNormals) {
+  OccupancyMap map({0.5, 60.0});
+  const double lo = 2.25, hi = 5.75, mid = 4.0;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const double side : {-1.0, 1.0}) {
+      Vec3 origin = Vec3::Constant(mid);
+      origin[axis] += side * 40.0;
+      Points face;
+      for (double u = lo; u <= hi + 1e-9; u += 0.1)
+        for (double v = lo; v <= hi + 1e-9; v += 0.1) {
+          Vec3 p;
+          p[axis] = side < 0 ? lo : hi;
+          p[(axis + 1) % 3] = u;
+          p[(axis + 2) % 3] = v;
+          face.push_back(p.cast<float>());
+        }
+      map.insertScan(origin, face);
+    }
+  const auto surface = map.surfaceVoxels(Vec3::Zero(), Vec3::Constant(8.0));
+  size_t faceInterior = 0;
+  for (const auto& voxel : surface) {
+    EXPECT_NEAR(voxel.normal.norm(), 1.0, 1e-12);
+    Vec3 outward = Vec3::Zero();
+    for (int axis = 0; axis < 3; ++axis) {
+      ASSERT_GE(voxel.centre[axis], lo - 1e-9);  // every surface voxel belongs to the box
+      ASSERT_LE(voxel.centre[axis], hi + 1e-9);
+      if (std::abs(voxel.centre[axis] - lo) < 1e-9) outward[axis] = -1.0;
+      if (std::abs(voxel.centre[axis] - hi) < 1e-9) outward[axis] = 1.0;
+    }
+    ASSERT_GT(outward.squaredNorm(), 0.0);
+    if (outward.squaredNorm() == 1.0) {
+      ++faceInterior;
+      EXPECT_LT((voxel.normal - outward).norm(), 1e-12) << voxel.centre.transpose();
+    } else {
+      EXPECT_GT(voxel.normal.dot(outward.normalized()), 0.8) << voxel.centre.transpose();
+    }
+  }
+  EXPECT_EQ(faceInterior, 6U * 6U * 6U);  // 6 faces of 8 x 8 cells, 6 x 6 away from the edges
+  EXPECT_EQ(surface.size(), 8U * 8U * 8U - 6U * 6U * 6U);
+}
+
+TEST(OccupancyMap, VoxelGridAgreesWithStateAndTheLeafRule) {
+  OccupancyMap map({0.5, 30.0});
+  const Vec3 first(0.1, 0.2, 1.3), second(3.7, -2.4, 2.1);
+  Points scan = wallAt(8.25, first, 3.0, 0.07);
+  for (const auto& p : floorAround(first, 6.0))
+    scan.push_back(p);
+  map.insertScan(first, scan);
+  map.insertScan(second, wallAt(-4.75, second, 2.0, 0.07));
+  const Vec3 min(-6.0, -8.0, -2.0), max(10.0, 6.0, 6.0);  // aligned with cells up to 2 m
+  for (const double resolution : {0.5, 1.0, 2.0})
+    for (const Vec3& shift : {Vec3(0, 0, 0), Vec3(0.1, 0.2, 0.3)}) {
+      const VoxelGrid grid = map.toVoxelGrid(min + shift, max + shift, resolution);
+      ASSERT_EQ(grid.size(), (Vec3(16, 14, 8) / resolution).cast<int>());
+      // The rule, by brute force over the leaves.
+      VoxelGrid expected(grid.origin(), resolution, grid.size());
+      const auto& tree = map.octree();
+      for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it) {
+        const Vec3 c(it.getX(), it.getY(), it.getZ());
+        const Index3 cell = expected.cellOf(c);
+        if (!expected.contains(cell)) continue;
+        if (tree.isNodeOccupied(*it))
+          expected.set(cell, CellState::Occupied);
+        else if (expected.state(cell) == CellState::Unknown)
+          expected.set(cell, CellState::Free);
+      }
+      size_t counts[3] = {0, 0, 0};
+      for (int z = 0; z < grid.size().z(); ++z)
+        for (int y = 0; y < grid.size().y(); ++y)
+          for (int x = 0; x < grid.size().x(); ++x) {
+            const Index3 cell(x, y, z);
+            ASSERT_EQ(grid.state(cell), expected.state(cell)) << resolution << " " << x << y << z;
+            if (resolution == 0.5) {
+              ASSERT_EQ(grid.state(cell), map.state(grid.centre(cell)));
+            }
+            ++counts[static_cast<int>(grid.state(cell))];
+          }
+      EXPECT_GT(counts[0], 0U);  // the scene has all three states
+      EXPECT_GT(counts[1], 0U);
+      EXPECT_GT(counts[2], 0U);
+    }
+}
+
+TEST(OccupancyMap, ClearanceMatchesBruteForce) {
+  OccupancyMap map({0.5, 30.0});
+  const Vec3 origin(0.1, 0.2, 1.3);
+  Points scan = wallAt(6.25, origin, 2.0, 0.07);
+  for (const auto& p : floorAround(origin, 5.0))
+    scan.push_back(p);
+  map.insertScan(origin, scan);
+  std::vector<Vec3> occupied;
+  const auto& tree = map.octree();
+  for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it)
+    if (tree.isNodeOccupied(*it)) occupied.emplace_back(it.getX(), it.getY(), it.getZ());
+  ASSERT_EQ(occupied.size(), map.occupiedCount());
+  for (int i = 0; i < 400; ++i) {
+    // A deterministic scatter over the scene, some points far from everything.
+    const Vec3 q(-4.0 + 0.37 * (i % 37), -5.0 + 0.61 * ((i * 7) % 19),
+                 -1.0 + 0.29 * ((i * 3) % 23));
+    for (const double cap : {0.8, 3.0}) {
+      double best = cap;
+      for (const auto& c : occupied)
+        best = std::min(best, (c - q).norm());
+      EXPECT_NEAR(map.clearance(q, cap), best, 1e-9) << q.transpose() << " cap " << cap;
+    }
+  }
+  EXPECT_EQ(OccupancyMap().clearance(Vec3::Zero(), 2.5), 2.5);
+}
+
+TEST(OccupancyMap, CellCentreMatchesTheOctreeCells) {
+  const OccupancyMap map({0.5, 30.0});
+  EXPECT_LT((map.cellCentre(Vec3(0.1, -0.1, 2.49)) - Vec3(0.25, -0.25, 2.25)).norm(), 1e-12);
+}
+
+}  // namespace
+}  // namespace coinspect::mapping

@@ -1,0 +1,112 @@
+// Shortest paths with clearance on a dense VoxelGrid: A* (26-connected) and Lazy Theta* (any
+// angle). Both use one cost model and one traversability rule, shared with path smoothing:
+//
+//   traversable(cell) = inside the grid, not Occupied, not Unknown under UnknownPolicy::Blocked,
+//                       and grid.clearance(cell) >= PathSearchOptions::clearance
+//   cost of a segment = sum over the cells it crosses of (length inside the cell) x multiplier,
+//   multiplier(cell)  = 1 + softWeight x max(0, 1 - clearance(cell) / softClearance)
+//                         + unknownPenalty (Unknown cells under UnknownPolicy::FreeWithCost)
+//
+// A move or segment is allowed only when every cell it touches is traversable, including cells it
+// only grazes at an edge or a corner (no corner cutting): every point of a returned path lies in a
+// traversable cell. The clearance field (VoxelGrid::computeClearance) is the caller's: it decides
+// whether unknown cells count as obstacles for the distance; its cap must exceed the required
+// clearance. Multipliers are >= 1, so the heuristics (3-D octile for A*, Euclidean for Theta*)
+// stay admissible and A* returns a least-cost 26-connected path.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "coinspect/mapping/voxel_grid.h"
+
+namespace coinspect::planning {
+
+using mapping::Index3;
+using mapping::Vec3;
+using mapping::VoxelGrid;
+
+enum class UnknownPolicy {
+  Blocked,      // unknown cells are never entered
+  Free,         // unknown cells are entered like free ones
+  FreeWithCost  // entered, at (1 + unknownPenalty) times the cost per metre
+};
+
+struct PathSearchOptions {
+  double clearance = 0.0;  // m, required distance field value (robot radius + margin)
+  UnknownPolicy unknown = UnknownPolicy::Blocked;
+  double unknownPenalty = 1.0;  // extra cost per metre in unknown cells (FreeWithCost)
+  double softClearance = 0.0;   // m; cells closer than this to an obstacle cost more (0: off)
+  double softWeight = 0.0;      // extra cost per metre at zero clearance, falling linearly to 0
+  // f = g + heuristicWeight x h. 1 gives least-cost paths (A*); w > 1 (weighted A*) returns a
+  // path costing at most w times the least and expands far fewer cells around obstacles.
+  double heuristicWeight = 1.0;
+  size_t maxExpansions = 1000000;
+  int snapRadius = 3;  // cells: a blocked start or goal moves to the nearest traversable cell
+};
+
+enum class PathStatus { Found, NoPath, StartBlocked, GoalBlocked, BudgetExhausted };
+const char* toString(PathStatus status);
+
+struct PathResult {
+  PathStatus status = PathStatus::NoPath;
+  // Found: the start point, the cell centres of the path's vertices, the goal point (the start
+  // and goal points are dropped when they coincide with their cell centre). BudgetExhausted: the
+  // start point and the vertices up to the expanded cell nearest the goal. Otherwise empty.
+  std::vector<Vec3> points;
+  std::vector<Index3> cells;  // the vertices' cells (A*: consecutive cells are neighbours)
+  double cost = 0.0;          // weighted length (m) between the first and last cell centres
+  size_t expansions = 0;
+  bool startSnapped = false;  // the start (goal) cell was blocked; the search used the nearest
+  bool goalSnapped = false;   // traversable cell within snapRadius
+};
+
+// Reusable search state: the per-cell arrays are allocated once per grid size and reset in O(1)
+// between queries by a generation stamp, so repeated queries on a large grid cost only what they
+// touch. Not thread-safe; use one searcher per thread.
+class PathSearcher {
+ public:
+  // The grid must have a clearance field when clearance or softClearance is > 0.
+  PathResult aStar(const VoxelGrid& grid, const Vec3& start, const Vec3& goal,
+                   const PathSearchOptions& options);
+  PathResult thetaStar(const VoxelGrid& grid, const Vec3& start, const Vec3& goal,
+                       const PathSearchOptions& options);
+
+ private:
+  struct Query;
+  void prepare(const VoxelGrid& grid);
+  PathResult search(const VoxelGrid& grid, const Vec3& start, const Vec3& goal,
+                    const PathSearchOptions& options, bool anyAngle);
+
+  std::vector<double> g_;
+  std::vector<int32_t> parent_;
+  std::vector<uint32_t> stamp_;  // == generation_: g_/parent_/flags_ are valid for this query
+  std::vector<uint8_t> flags_;
+  std::vector<uint32_t> weightStamp_;  // == generation_: weight_ holds the cell's multiplier
+  std::vector<double> weight_;         // (0: not traversable) under this query's options
+  uint32_t generation_ = 0;
+};
+
+// One-shot conveniences (allocate a searcher).
+PathResult findPathAStar(const VoxelGrid& grid, const Vec3& start, const Vec3& goal,
+                         const PathSearchOptions& options);
+PathResult findPathThetaStar(const VoxelGrid& grid, const Vec3& start, const Vec3& goal,
+                             const PathSearchOptions& options);
+
+// The rule and cost model above, for other planners and for checking paths.
+bool cellTraversable(const VoxelGrid& grid, const Index3& cell, const PathSearchOptions& options);
+double cellCostMultiplier(const VoxelGrid& grid, const Index3& cell,
+                          const PathSearchOptions& options);
+
+// Walks the straight segment a -> b through the grid. Returns false when it touches a
+// non-traversable cell; otherwise true and, when `cost` is given, its weighted length.
+bool segmentTraversable(const VoxelGrid& grid, const Vec3& a, const Vec3& b,
+                        const PathSearchOptions& options, double* cost = nullptr);
+
+// The nearest traversable cell to `point` within `radius` cells (Euclidean distance of cell
+// centres to the point; ties to the lowest linear index). False when there is none.
+bool nearestTraversableCell(const VoxelGrid& grid, const Vec3& point, int radius,
+                            const PathSearchOptions& options, Index3* cell);
+
+}  // namespace coinspect::planning
