@@ -1,0 +1,96 @@
+// Collision-free flight to a goal or along a route, as one setpoint per decision.
+//
+// A unit first climbs vertically to `takeoffHeight` above where it stands. Then a goal (or each
+// leg of a route whose straight segment is not clear) is planned with the planning library's
+// path search on the RobotMap's grid, at the clearance of the robot's radius plus a margin plus
+// the grid's own uncertainty; the polyline is flown by a PathProfile. The remaining path is
+// checked again whenever the grid is rebuilt, and planned again from where the robot is when new
+// map information blocks it. Without anything to do the unit hovers where it stopped.
+//
+// Neighbours in line of sight (their odometry is in the view) are deconflicted by priority (fleet
+// order: the lower index goes first): a unit holds while a higher-priority neighbour is within
+// `separation` of its next few metres of path, and every unit closer than `minSeparation` to a
+// neighbour backs away from it (the lower-priority one also climbs).
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "coinspect/agent/agent_view.h"
+#include "coinspect/planning/path_search.h"
+#include "coinspect/strategies/runtime/path_profile.h"
+#include "coinspect/strategies/runtime/robot_map.h"
+
+namespace coinspect::strategies::runtime {
+
+struct FlightOptions {
+  double radius = 0.5;        // m, the robot's collision radius
+  double safetyMargin = 0.8;  // m, kept between the robot's sphere and any mapped surface
+  planning::UnknownPolicy unknown = planning::UnknownPolicy::Blocked;
+  ProfileLimits limits;
+  double takeoffHeight = 3.0;     // m above the start, climbed vertically first
+  double retryPeriod = 1.0;       // s between planning attempts after a failure
+  int maxFailures = 3;            // consecutive failures before failed() says so
+  int snapRadius = 4;             // cells: blocked start/goal/waypoints move this far at most
+  double separation = 4.0;        // m, hold distance to higher-priority neighbours' positions
+  double minSeparation = 2.0;     // m, back away from any neighbour closer than this
+  double lookahead = 4.0;         // m of own path checked against neighbours
+  double recheckDistance = 20.0;  // m of remaining path checked again after each map rebuild
+  size_t maxExpansions = 200000;  // search budget to the first waypoint (a tenth per later leg)
+};
+
+class Flight {
+ public:
+  // `fleet`: every unit's name in fleet order (priorities); `self`: own fleet index.
+  Flight(const FlightOptions& options, std::vector<std::string> fleet, size_t self);
+
+  // New goal (ignored when equal to the current one within 0.3 m and `speed` unchanged).
+  void goTo(const Vec3& goal, double speed);
+  // Visit every waypoint in order (a blocked one is moved to the nearest clear cell or skipped).
+  void follow(const std::vector<Vec3>& route, double speed);
+  void hover();
+
+  bool takingOff() const { return phase_ == Phase::Takeoff; }
+  // The goal or route is done (also after hover()).
+  bool done() const { return phase_ == Phase::Idle; }
+  bool failed() const { return failures_ >= options_.maxFailures; }
+  double requiredClearance(const mapping::VoxelGrid& grid) const;
+
+  // One decision: replans when needed, deconflicts, returns the setpoint (yaw: keeps the current
+  // heading; callers overwrite it).
+  agent::AgentSetpoint step(const agent::AgentView& view, const RobotMap& map);
+
+  const PathProfile& profile() const { return profile_; }
+  // Unit direction of travel at the carrot (zero when hovering).
+  Vec3 travelDirection() const;
+
+ private:
+  enum class Phase { Takeoff, Planning, Flying, Idle };
+  planning::PathSearchOptions searchOptions(const mapping::VoxelGrid& grid) const;
+  bool plan(const Vec3& from, double speed, const RobotMap& map);
+  bool remainingPathClear(const RobotMap& map) const;
+  agent::AgentSetpoint deconflict(const agent::AgentView& view, const RobotMap& map,
+                                  agent::AgentSetpoint setpoint, bool* holding);
+  size_t priorityOf(const std::string& name) const;
+
+  FlightOptions options_;
+  std::vector<std::string> fleet_;
+  size_t self_;
+  planning::PathSearcher searcher_;
+
+  Phase phase_ = Phase::Takeoff;
+  bool started_ = false;
+  Vec3 hoverPoint_ = Vec3::Zero();
+  std::vector<Vec3> route_;        // what is left to visit (the goal is a route of one)
+  std::vector<size_t> routeMark_;  // per profile vertex: route waypoints reached there
+  double speed_ = 1.0;
+  PathProfile profile_;
+  uint64_t checkedGridVersion_ = 0;
+  double lastAttempt_ = -1e300;
+  int failures_ = 0;
+  double lastTime_ = 0.0;
+  Vec3 takeoffTarget_ = Vec3::Zero();
+};
+
+}  // namespace coinspect::strategies::runtime

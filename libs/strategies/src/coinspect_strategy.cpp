@@ -1,0 +1,301 @@
+#include "coinspect/strategies/coinspect/coinspect_strategy.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "coinspect/core/error.h"
+#include "coinspect/planning/routing_tsp.h"
+#include "coinspect/planning/viewpoint.h"
+#include "coinspect/strategies/runtime/box_geometry.h"
+
+namespace coinspect::strategies::coinspect_strategy {
+
+namespace {
+
+constexpr double kNever = -1e300;
+constexpr double kFaceSpacing = 4.0;  // m between work-partition samples of the box faces
+constexpr double kPatchSize = 2.0;    // m, surface patches the coverage plans over
+constexpr double kReached = 1.2;      // m from a stop's body position that counts as there
+constexpr size_t kStopsPerPlan = 8;   // viewpoints flown per plan (each leg may need a search)
+constexpr int kAttemptsPerPatch = 2;  // plans that may pick a patch before it is given up
+
+double readPositive(const Config& config, const std::string& key, double fallback) {
+  const double value = config.getDouble("coinspect", key, fallback);
+  if (!(value > 0.0) || !std::isfinite(value))
+    throw InputError(config.source(), "[coinspect] " + key, "must be a finite number > 0");
+  return value;
+}
+
+double headingTo(const Vec3& from, const Vec3& to, double fallback) {
+  const Vec3 d = to - from;
+  return std::hypot(d.x(), d.y()) > 1e-6 ? std::atan2(d.y(), d.x()) : fallback;
+}
+
+}  // namespace
+
+CoinspectOptions CoinspectOptions::read(const Config& config) {
+  CoinspectOptions o;
+  o.exploreTime = config.getDouble("coinspect", "explore_time", o.exploreTime);
+  if (!(o.exploreTime >= 0.0) || !std::isfinite(o.exploreTime))
+    throw InputError(config.source(), "[coinspect] explore_time", "must be a finite number >= 0");
+  o.exploreStandoff = readPositive(config, "explore_standoff", o.exploreStandoff);
+  o.viewDistance = readPositive(config, "view_distance", o.viewDistance);
+  if (o.viewDistance > 1.5)
+    throw InputError(config.source(), "[coinspect] view_distance",
+                     "is a fraction of the full-resolution distance: at most 1.5");
+  o.replanPeriod = readPositive(config, "replan_period", o.replanPeriod);
+  o.transitSpeed = readPositive(config, "transit_speed", o.transitSpeed);
+  o.explorerCapacity = readPositive(config, "explorer_capacity", o.explorerCapacity);
+  o.delivery.period = readPositive(config, "deliver_period", o.delivery.period);
+  return o;
+}
+
+CoinspectStrategy::CoinspectStrategy(const agent::StrategyContext& context,
+                                     const CoinspectOptions& options)
+    : options_(options),
+      role_(context.role),
+      self_(context.unitIndex),
+      fleet_(context.fleet),
+      camera_(context.camera),
+      radius_(context.collisionRadius),
+      contact_(options.delivery) {
+  optics_.focalLength = camera_.focalLength;
+  optics_.pixelSize = camera_.pixelSize;
+  optics_.exposure = camera_.exposureTime;
+  optics_.desiredMmPerPixel = camera_.desiredMmPerPixel;
+}
+
+CoinspectStrategy::~CoinspectStrategy() = default;
+
+void CoinspectStrategy::initialise(const agent::AgentView& view) {
+  initialised_ = true;
+  const double groundZ = view.odometry.position.z() - 0.1;
+  runtime::RobotMapOptions mapOptions;
+  mapOptions.mapResolution = 1.0;  // key frames only: ~2 ms each at 1 m (doc/mapping.md)
+  map_ = std::make_unique<runtime::RobotMap>(mapOptions, *view.boxes, groundZ);
+
+  runtime::FlightOptions flightOptions;
+  flightOptions.radius = radius_;
+  flightOptions.limits.speed = options_.transitSpeed;
+  flightOptions.takeoffHeight = 6.0;
+  std::vector<std::string> names;
+  for (const auto& member : fleet_)
+    names.push_back(member.name);
+  flight_ = std::make_unique<runtime::Flight>(flightOptions, names, self_);
+
+  // The same partition in every robot: UAVs in fleet order, explorers with less capacity.
+  std::vector<double> capacities;
+  for (size_t i = 0; i < fleet_.size(); ++i) {
+    if (fleet_[i].role == agent::Role::GroundStation) continue;
+    if (i == self_) region_ = static_cast<uint32_t>(capacities.size());
+    capacities.push_back(fleet_[i].role == agent::Role::Explorer ? options_.explorerCapacity : 1.0);
+  }
+  work_ = sampleBoxFaces(*view.boxes, kFaceSpacing, groundZ, 1.0);
+  workRegion_ = partitionWork(work_, capacities);
+  task_ =
+      role_ == agent::Role::Explorer && options_.exploreTime > 0.0 ? Task::Explore : Task::Inspect;
+  if (task_ == Task::Explore) flight_->follow(explorationRoute(view), options_.transitSpeed);
+}
+
+// Orbits around the bounds of all boxes at the standoff: explorer k of n takes every n-th
+// layer, alternating directions, so two explorers map two heights on opposite sides.
+std::vector<Vec3> CoinspectStrategy::explorationRoute(const agent::AgentView& view) const {
+  const auto region = runtime::missionRegion(*view.boxes, 0.0, view.odometry.position.z());
+  agent::BoxView all;
+  all.center = region.centre();
+  all.size = region.size();
+  size_t explorers = 0, rank = 0;
+  for (size_t i = 0; i < fleet_.size(); ++i)
+    if (fleet_[i].role == agent::Role::Explorer) {
+      if (i == self_) rank = explorers;
+      ++explorers;
+    }
+  const double top = region.max.z();
+  const double bottom = view.odometry.position.z();
+  const std::vector<double> layers = {bottom + 0.3 * (top - bottom),
+                                      bottom + 0.75 * (top - bottom)};
+  std::vector<Vec3> route;
+  for (size_t layer = rank % layers.size(); layer < layers.size();
+       layer += std::max<size_t>(1, explorers)) {
+    auto orbit = runtime::standoffOrbit(all, layers[layer], options_.exploreStandoff, 6.0,
+                                        route.empty() ? view.odometry.position : route.back());
+    if (rank % 2 == 1) std::reverse(orbit.begin() + 1, orbit.end());
+    orbit.push_back(orbit.front());
+    route.insert(route.end(), orbit.begin(), orbit.end());
+  }
+  return route;
+}
+
+void CoinspectStrategy::planInspection(const agent::AgentView& view) {
+  lastPlan_ = view.missionTime;
+  const auto& grid = map_->grid();
+  const auto& region = map_->region();
+  std::vector<mapping::SurfaceVoxel> surface;
+  for (const auto& voxel : map_->map().surfaceVoxels(region.min, region.max))
+    for (const auto& box : *view.boxes)
+      if (runtime::distanceToBox(box, voxel.centre) <= 1.0) {
+        surface.push_back(voxel);
+        break;
+      }
+  std::vector<planning::InspectionPatch> patches;
+  for (const auto& patch : planning::groupSurface(surface, kPatchSize)) {
+    if (inspected_.count(patch.key)) continue;
+    auto owner = owner_.find(patch.key);
+    if (owner == owner_.end()) {
+      size_t best = 0;
+      double bestDistance = std::numeric_limits<double>::infinity();
+      for (size_t w = 0; w < work_.size(); ++w) {
+        const double d = (work_[w].position - patch.centre).squaredNorm();
+        if (d < bestDistance) bestDistance = d, best = w;
+      }
+      owner = owner_.emplace(patch.key, work_.empty() ? 0u : workRegion_[best]).first;
+    }
+    if (owner->second == region_) patches.push_back(patch);
+  }
+
+  stops_.clear();
+  planning::CoverageOptions coverage;
+  const double fullResolution = planning::fullResolutionDistance(optics_);
+  coverage.distance = options_.viewDistance * fullResolution;
+  coverage.maxDistance = 1.1 * fullResolution;
+  coverage.clearance = flight_->requiredClearance(grid);
+  coverage.groundZ = map_->region().min.z();
+  const auto views = planning::coverPatches(patches, grid, coverage);
+  if (views.empty()) return;
+
+  // The nearest views first (by straight distance), ordered by an open tour from here.
+  const Vec3 here = view.odometry.position;
+  std::vector<size_t> chosen(views.size());
+  for (size_t i = 0; i < views.size(); ++i)
+    chosen[i] = i;
+  std::stable_sort(chosen.begin(), chosen.end(), [&](size_t a, size_t b) {
+    return (views[a].camera - here).squaredNorm() < (views[b].camera - here).squaredNorm();
+  });
+  if (chosen.size() > kStopsPerPlan) chosen.resize(kStopsPerPlan);
+  std::vector<Eigen::Vector3d> points = {here};
+  for (const size_t i : chosen)
+    points.push_back(views[i].camera);
+  const auto tour =
+      planning::solveTsp(planning::euclideanCostMatrix(points), {planning::TourKind::Open, 0, -1});
+  std::vector<Vec3> route;
+  for (size_t k = 1; k < tour.order.size(); ++k) {
+    const auto& v = views[chosen[tour.order[k] - 1]];
+    Stop stop;
+    stop.target = v.target;
+    stop.yaw = headingTo(v.camera, v.target, view.odometry.yaw);
+    stop.body = v.camera - Eigen::AngleAxisd(stop.yaw, Vec3::UnitZ()) * camera_.positionInBody;
+    for (const uint32_t j : v.covered)
+      stop.patches.push_back(patches[j].key);
+    route.push_back(stop.body);
+    stops_.push_back(std::move(stop));
+  }
+  const double speed = planning::inspectionSpeed(optics_, coverage.distance, options_.transitSpeed);
+  flight_->follow(route, speed);
+}
+
+void CoinspectStrategy::advanceStops(const Vec3& position) {
+  for (size_t i = 0; i < std::min<size_t>(3, stops_.size()); ++i)
+    if ((position - stops_[i].body).norm() < kReached) {
+      for (size_t k = 0; k <= i; ++k)
+        inspected_.insert(stops_[k].patches.begin(), stops_[k].patches.end());
+      stops_.erase(stops_.begin(), stops_.begin() + static_cast<long>(i) + 1);
+      return;
+    }
+}
+
+agent::AgentCommand CoinspectStrategy::decide(const agent::AgentView& view) {
+  agent::AgentCommand out;
+  if (role_ == agent::Role::GroundStation || !view.alive || !view.boxes) return out;
+  if (!initialised_) initialise(view);
+  map_->update(view);
+  map_->refresh(view.time);
+  contact_.observe(view);
+  const Vec3 here = view.odometry.position;
+
+  if (task_ != Task::Deliver && contact_.shouldDeliver(view)) {
+    resume_ = task_;
+    task_ = Task::Deliver;
+    flight_->goTo(*contact_.nearestContactPoint(here), options_.transitSpeed);
+  } else if (task_ == Task::Deliver && contact_.inContact()) {
+    // Near the end, stay in sight of the station: the last captures are merged while here.
+    if (view.timeLeft > options_.delivery.endMargin + 10.0) {
+      task_ = resume_;
+      lastPlan_ = kNever;
+      if (task_ == Task::Explore) flight_->follow(explorationRoute(view), options_.transitSpeed);
+    } else {
+      flight_->hover();
+    }
+  }
+  if (task_ == Task::Explore && !flight_->takingOff() &&
+      (flight_->done() || flight_->failed() || view.missionTime > options_.exploreTime)) {
+    task_ = Task::Inspect;
+    lastPlan_ = kNever;
+  }
+  if (task_ == Task::Inspect && !flight_->takingOff()) {
+    advanceStops(here);
+    if ((flight_->done() || flight_->failed()) && !stops_.empty()) {
+      // The flight ended without reaching these stops (blocked or unreachable): their patches
+      // get another chance in a later plan, then are given up.
+      for (const auto& stop : stops_)
+        for (const uint64_t key : stop.patches)
+          if (++attempts_[key] >= kAttemptsPerPatch) inspected_.insert(key);
+      stops_.clear();
+      flight_->hover();
+    }
+    const bool stale = view.missionTime - lastPlan_ >= options_.replanPeriod;
+    const bool idle = (stops_.empty() || flight_->done()) && view.missionTime - lastPlan_ >= 2.0;
+    if (stale || idle) planInspection(view);
+    if (stops_.empty() && flight_->done()) {
+      // Nothing mapped to inspect yet: wait by the own region, where key frames may arrive.
+      double best = std::numeric_limits<double>::infinity();
+      Vec3 staging = here;
+      for (size_t w = 0; w < work_.size(); ++w) {
+        if (workRegion_[w] != region_) continue;
+        const Vec3 candidate = work_[w].position + options_.exploreStandoff * work_[w].normal;
+        const double d = (candidate - here).norm();
+        if (d < best) best = d, staging = candidate;
+      }
+      if (best > 2.0) flight_->goTo(staging, options_.transitSpeed);
+    }
+  }
+  return command(view, flight_->step(view, *map_));
+}
+
+agent::AgentCommand CoinspectStrategy::command(const agent::AgentView& view,
+                                               agent::AgentSetpoint setpoint) {
+  agent::AgentCommand out;
+  const auto& odometry = view.odometry;
+  // Look at the next viewpoint's patch when inspecting, else at the nearest box.
+  Vec3 target;
+  if (task_ == Task::Inspect && !stops_.empty()) {
+    target = stops_.front().target;
+  } else {
+    double best = std::numeric_limits<double>::infinity();
+    target = odometry.position + Vec3(std::cos(odometry.yaw), std::sin(odometry.yaw), 0.0);
+    for (const auto& box : *view.boxes) {
+      const Vec3 p = runtime::closestPointOnBox(box, odometry.position);
+      const double d = (p - odometry.position).norm();
+      if (d < best) best = d, target = p;
+    }
+  }
+  setpoint.yaw = headingTo(odometry.position, target, odometry.yaw);
+  const Vec3 cameraPosition =
+      odometry.position + Eigen::AngleAxisd(odometry.yaw, Vec3::UnitZ()) * camera_.positionInBody;
+  const auto aim = planning::aimGimbal(cameraPosition, odometry.yaw, target);
+  out.gimbal = agent::GimbalCommand::angles(
+      std::clamp(aim.pitch, -view.gimbal.pitchMax, view.gimbal.pitchMax),
+      std::clamp(aim.yaw, -view.gimbal.yawMax, view.gimbal.yawMax));
+  out.setpoint = setpoint;
+  return out;
+}
+
+void registerCoinspect(agent::StrategyRegistry& registry) {
+  registry.registerStrategy("coinspect", [](const agent::StrategyContext& context) {
+    return std::make_unique<CoinspectStrategy>(context, CoinspectOptions::read(context.config));
+  });
+}
+
+}  // namespace coinspect::strategies::coinspect_strategy

@@ -1,0 +1,272 @@
+#include "coinspect/strategies/runtime/flight.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "coinspect/core/error.h"
+
+namespace coinspect::strategies::runtime {
+
+namespace {
+
+constexpr double kNever = -std::numeric_limits<double>::infinity();
+
+}  // namespace
+
+Flight::Flight(const FlightOptions& options, std::vector<std::string> fleet, size_t self)
+    : options_(options), fleet_(std::move(fleet)), self_(self) {}
+
+double Flight::requiredClearance(const mapping::VoxelGrid& grid) const {
+  // A path point may lie anywhere in its cell and the surface anywhere in the blocking cell:
+  // each end loses up to half a cell diagonal against the centre-to-centre distance field.
+  return options_.radius + options_.safetyMargin + grid.resolution() * std::sqrt(3.0);
+}
+
+planning::PathSearchOptions Flight::searchOptions(const mapping::VoxelGrid& grid) const {
+  planning::PathSearchOptions out;
+  out.clearance = requiredClearance(grid);
+  out.unknown = options_.unknown;
+  out.snapRadius = options_.snapRadius;
+  // Prefer the middle of free space a little: paths keep away from surfaces when they can.
+  out.softClearance = out.clearance + 2.0;
+  out.softWeight = 0.5;
+  // Weighted Theta*: paths at most 1.5x the least cost, found in ~1 ms instead of up to
+  // hundreds (doc/benchmarks.md, "Path search"); a bounded search keeps a decision short when
+  // the goal is walled off.
+  out.heuristicWeight = 1.5;
+  out.maxExpansions = 60000;
+  return out;
+}
+
+size_t Flight::priorityOf(const std::string& name) const {
+  const auto it = std::find(fleet_.begin(), fleet_.end(), name);
+  return static_cast<size_t>(it - fleet_.begin());  // unknown names rank last
+}
+
+void Flight::goTo(const Vec3& goal, double speed) {
+  if (route_.size() == 1 && (route_.front() - goal).norm() < 0.3 && speed == speed_ &&
+      phase_ != Phase::Idle)
+    return;
+  follow({goal}, speed);
+}
+
+void Flight::follow(const std::vector<Vec3>& route, double speed) {
+  route_ = route;
+  speed_ = speed;
+  failures_ = 0;
+  lastAttempt_ = kNever;
+  if (phase_ != Phase::Takeoff) phase_ = route_.empty() ? Phase::Idle : Phase::Planning;
+}
+
+void Flight::hover() {
+  route_.clear();
+  if (phase_ == Phase::Takeoff) return;
+  if (phase_ == Phase::Flying) hoverPoint_ = profile_.setpoint().position;
+  phase_ = Phase::Idle;
+}
+
+Vec3 Flight::travelDirection() const {
+  if (phase_ != Phase::Flying && phase_ != Phase::Takeoff) return Vec3::Zero();
+  const Vec3 v = profile_.setpoint().velocity;
+  return v.norm() > 1e-6 ? Vec3(v.normalized()) : Vec3::Zero();
+}
+
+bool Flight::plan(const Vec3& from, double speed, const RobotMap& map) {
+  const auto& grid = map.grid();
+  const auto options = searchOptions(grid);
+  std::vector<Vec3> points{from};
+  std::vector<size_t> marks{0};
+  Vec3 current = from;
+  for (size_t k = 0; k < route_.size(); ++k) {
+    Vec3 target = route_[k];
+    if (!planning::cellTraversable(grid, grid.cellOf(target), options)) {
+      mapping::Index3 cell;
+      if (!planning::nearestTraversableCell(grid, target, options_.snapRadius, options, &cell))
+        continue;  // no clear cell near this waypoint: skip it
+      target = grid.centre(cell);
+    }
+    std::vector<Vec3> leg;
+    if (planning::segmentTraversable(grid, current, target, options)) {
+      leg.push_back(target);
+    } else {
+      // Legs between nearby waypoints get a small search budget: a waypoint walled off from
+      // the last one is skipped rather than paid for with a flood of the whole grid.
+      auto legOptions = options;
+      legOptions.maxExpansions =
+          points.size() == 1 ? options_.maxExpansions : options_.maxExpansions / 10;
+      const auto result = searcher_.thetaStar(grid, current, target, legOptions);
+      if (result.status != planning::PathStatus::Found) continue;  // unreachable: skip it
+      for (const auto& p : result.points)
+        if ((p - current).norm() > 1e-6) leg.push_back(p);
+    }
+    for (const auto& p : leg) {
+      if ((p - points.back()).norm() <= 1e-6) continue;  // PathProfile would drop it
+      points.push_back(p);
+      marks.push_back(k);
+    }
+    marks.back() = k + 1;
+    current = points.back();
+  }
+  if (points.size() < 2) return false;
+  ProfileLimits limits = options_.limits;
+  limits.speed = std::min(limits.speed, speed_);
+  limits.startSpeed = speed;
+  profile_ = PathProfile(points, limits);
+  routeMark_ = marks;
+  COINSPECT_ASSERT(profile_.points().size() == routeMark_.size());
+  checkedGridVersion_ = map.gridVersion();
+  return true;
+}
+
+bool Flight::remainingPathClear(const RobotMap& map) const {
+  const auto& grid = map.grid();
+  const auto options = searchOptions(grid);
+  const auto& points = profile_.points();
+  const size_t next = profile_.nextVertex();
+  if (next >= points.size()) return true;
+  const Vec3 carrot = profile_.pointAt(profile_.travelled());
+  // Where the robot already is cannot be avoided: a start cell that became blocked is checked
+  // from the next vertex on.
+  if (planning::cellTraversable(grid, grid.cellOf(carrot), options) &&
+      !planning::segmentTraversable(grid, carrot, points[next], options))
+    return false;
+  // Only the next stretch: farther legs are checked when they come near (new map information
+  // there would otherwise make the robot plan the whole route again at every rebuild).
+  double checked = (points[next] - carrot).norm();
+  for (size_t i = next; i + 1 < points.size() && checked < options_.recheckDistance; ++i) {
+    if (!planning::segmentTraversable(grid, points[i], points[i + 1], options)) return false;
+    checked += (points[i + 1] - points[i]).norm();
+  }
+  return true;
+}
+
+agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const RobotMap& map,
+                                        agent::AgentSetpoint setpoint, bool* holding) {
+  *holding = false;
+  const Vec3 me = view.odometry.position;
+  const size_t myPriority = self_;
+  Vec3 escape = Vec3::Zero();
+  for (const auto& neighbour : view.neighbours) {
+    if (neighbour.role == agent::Role::GroundStation) continue;
+    const Vec3 other = neighbour.odometry.position;
+    const Vec3 offset = me - other;
+    const double distance = offset.norm();
+    const bool higher = priorityOf(neighbour.name) < myPriority;
+    if (distance < options_.minSeparation) {
+      Vec3 away = distance > 1e-6 ? Vec3(offset / distance) : Vec3::UnitZ();
+      if (!higher)
+        away.z() -= 0.5;  // the higher-priority unit dips, the other climbs
+      else
+        away.z() += 0.5;
+      escape += away;
+    }
+    if (!higher) continue;
+    // Hold while the higher-priority unit is near our next few metres of path.
+    bool near = distance < options_.separation;
+    for (double ahead = 0.0; !near && ahead <= options_.lookahead && !profile_.empty();
+         ahead += 1.0)
+      near = (profile_.pointAt(profile_.travelled() + ahead) - other).norm() < options_.separation;
+    if (!near) continue;
+    *holding = true;
+    // Step aside when it closes in: across its motion, and up.
+    const Vec3 velocity = neighbour.odometry.velocity;
+    if (distance > 1e-6 && velocity.dot(offset / distance) > 0.2) {
+      Vec3 across = offset - velocity.normalized() * velocity.normalized().dot(offset);
+      across = across.norm() > 1e-3 ? Vec3(across.normalized()) : Vec3::Zero();
+      escape += across + Vec3(0, 0, 0.5);
+    }
+  }
+  if (escape.norm() < 1e-6) {
+    if (*holding) setpoint.velocity = Vec3::Zero();  // wait where the reference point is
+    return setpoint;
+  }
+  *holding = true;
+  const auto& grid = map.grid();
+  const auto options = searchOptions(grid);
+  const Vec3 target = me + 1.5 * escape.normalized();
+  agent::AgentSetpoint out = setpoint;
+  out.velocity = Vec3::Zero();
+  out.acceleration = Vec3::Zero();
+  out.position = planning::segmentTraversable(grid, me, target, options) ? target : me;
+  return out;
+}
+
+agent::AgentSetpoint Flight::step(const agent::AgentView& view, const RobotMap& map) {
+  const Vec3 position = view.odometry.position;
+  const double dt = started_ ? std::max(0.0, view.time - lastTime_) : 0.0;
+  lastTime_ = view.time;
+  if (!started_) {
+    started_ = true;
+    takeoffTarget_ = position + Vec3(0, 0, options_.takeoffHeight);
+    ProfileLimits climb = options_.limits;
+    climb.speed = std::min(climb.speed, 1.0);
+    profile_ = PathProfile({position, takeoffTarget_}, climb);
+    hoverPoint_ = takeoffTarget_;
+  }
+
+  bool holding = false;
+  agent::AgentSetpoint setpoint;
+  setpoint.yaw = view.odometry.yaw;
+  switch (phase_) {
+    case Phase::Takeoff:
+      profile_.advance(position, dt);
+      if (profile_.finished() && (position - takeoffTarget_).norm() < 0.5)
+        phase_ = route_.empty() ? Phase::Idle : Phase::Planning;
+      setpoint.position = profile_.setpoint().position;
+      setpoint.velocity = profile_.setpoint().velocity;
+      return setpoint;  // straight up from the ground: nothing to deconflict yet
+    case Phase::Planning:
+      if (view.time - lastAttempt_ >= options_.retryPeriod) {
+        lastAttempt_ = view.time;
+        if (plan(position, view.odometry.velocity.norm(), map)) {
+          phase_ = Phase::Flying;
+          failures_ = 0;
+        } else {
+          ++failures_;
+        }
+      }
+      if (phase_ != Phase::Flying) {
+        setpoint.position = hoverPoint_;
+        break;
+      }
+      [[fallthrough]];
+    case Phase::Flying: {
+      if (map.gridVersion() != checkedGridVersion_) {
+        checkedGridVersion_ = map.gridVersion();
+        if (!remainingPathClear(map)) {
+          // Keep only the route waypoints not reached yet, and plan again from here.
+          const size_t reached =
+              routeMark_[std::min(profile_.nextVertex() - 1, routeMark_.size() - 1)];
+          route_.erase(route_.begin(),
+                       route_.begin() + static_cast<long>(std::min(reached, route_.size())));
+          hoverPoint_ = profile_.setpoint().position;
+          if (route_.empty() || !plan(position, view.odometry.velocity.norm(), map)) {
+            phase_ = route_.empty() ? Phase::Idle : Phase::Planning;
+            lastAttempt_ = view.time;
+            if (!route_.empty()) ++failures_;
+            setpoint.position = hoverPoint_;
+            break;
+          }
+        }
+      }
+      const auto preview = deconflict(view, map, profile_.setpoint(), &holding);
+      if (!holding) profile_.advance(position, dt);
+      setpoint = holding ? preview : profile_.setpoint();
+      setpoint.yaw = view.odometry.yaw;
+      if (profile_.finished() && !holding) {
+        phase_ = Phase::Idle;
+        hoverPoint_ = profile_.points().back();
+        route_.clear();
+      }
+      return setpoint;
+    }
+    case Phase::Idle:
+      setpoint.position = hoverPoint_;
+      break;
+  }
+  const auto out = deconflict(view, map, setpoint, &holding);
+  return out;
+}
+
+}  // namespace coinspect::strategies::runtime

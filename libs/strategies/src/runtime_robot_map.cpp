@@ -1,0 +1,168 @@
+#include "coinspect/strategies/runtime/robot_map.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "coinspect/core/error.h"
+
+namespace coinspect::strategies::runtime {
+
+namespace {
+constexpr double kUavRadius = 1.5;  // m around a UAV's centre in which scan points are its own
+}  // namespace
+
+const char* toString(UnknownSpace policy) {
+  switch (policy) {
+    case UnknownSpace::Blocked:
+      return "blocked";
+    case UnknownSpace::Free:
+      return "free";
+    case UnknownSpace::BlockedNearBoxes:
+      return "near-boxes";
+  }
+  return "?";
+}
+
+bool parseUnknownSpace(const std::string& text, UnknownSpace* out) {
+  for (const auto policy :
+       {UnknownSpace::Blocked, UnknownSpace::Free, UnknownSpace::BlockedNearBoxes}) {
+    if (text == toString(policy)) {
+      *out = policy;
+      return true;
+    }
+  }
+  return false;
+}
+
+RobotMap::RobotMap(const RobotMapOptions& options, const std::vector<BoxView>& boxes,
+                   double groundZ)
+    : options_(options),
+      region_(missionRegion(boxes, options.regionMargin, groundZ)),
+      map_(mapping::OccupancyMapOptions{options.mapResolution, options.maxRange}) {
+  COINSPECT_ASSERT(options.gridResolution > 0.0 && options.rebuildPeriod >= 0.0);
+  const double res = options.gridResolution;
+  const mapping::Index3 size =
+      ((region_.max - region_.min) / res).array().ceil().cast<int>().max(1).matrix();
+  grid_ = mapping::VoxelGrid(region_.min, res, size);
+  // The blocking zone is constant: computed once per cell centre.
+  blockUnknown_.assign(grid_.cellCount(), options.unknown == UnknownSpace::Blocked ? 1 : 0);
+  if (options.unknown == UnknownSpace::BlockedNearBoxes) {
+    std::vector<BoxView> columns;
+    for (const auto& box : boxes)
+      columns.push_back(
+          extendToGround(box, std::max(groundZ, boxBounds(box).min.z() - options.columnDepth)));
+    for (int z = 0; z < size.z(); ++z)
+      for (int y = 0; y < size.y(); ++y)
+        for (int x = 0; x < size.x(); ++x) {
+          const mapping::Index3 cell(x, y, z);
+          const Vec3 c = grid_.centre(cell);
+          for (const auto& column : columns)
+            if (distanceToBox(column, c) <= options.boxMargin) {
+              blockUnknown_[grid_.linear(cell)] = 1;
+              break;
+            }
+        }
+  }
+  rebuild();
+}
+
+void RobotMap::update(const agent::AgentView& view) {
+  // Other UAVs show up in LiDAR scans: points within kUavRadius of a unit in sight (or of this
+  // one) are dropped, so moving robots leave no phantom obstacles in the map.
+  std::vector<Vec3> uavs = {view.odometry.position};
+  for (const auto& neighbour : view.neighbours)
+    uavs.push_back(neighbour.odometry.position);
+  std::vector<Eigen::Vector3f> kept;
+  const auto withoutUavs =
+      [&](const std::vector<Eigen::Vector3f>& points) -> const std::vector<Eigen::Vector3f>& {
+    kept.clear();
+    for (const auto& point : points) {
+      const Vec3 p = point.cast<double>();
+      if (std::none_of(uavs.begin(), uavs.end(),
+                       [&](const Vec3& uav) { return (p - uav).norm() < kUavRadius; }))
+        kept.push_back(point);
+    }
+    return kept;
+  };
+  const auto insert = [&](const agent::KeyFrameView& frame) {
+    if (!frame || frame->points.empty()) return;
+    map_.insertScan(frame->position, withoutUavs(frame->points));
+    ++scansInserted_;
+  };
+  // Where the robot is, there is no obstacle: the cells its body overlaps are observed free,
+  // which also clears the take-off column and any phantom left by a scan.
+  std::vector<Vec3> body;
+  const double reach = options_.selfClearRadius;
+  const double step = options_.mapResolution;
+  for (double dz = -reach; dz <= reach + 1e-9; dz += step)
+    for (double dy = -reach; dy <= reach + 1e-9; dy += step)
+      for (double dx = -reach; dx <= reach + 1e-9; dx += step) {
+        const Vec3 p = view.odometry.position + Vec3(dx, dy, dz);
+        if (Vec3(dx, dy, dz).norm() <= reach + 1e-9 && map_.state(p) != mapping::CellState::Free)
+          body.push_back(p);
+      }
+  if (!body.empty() && view.alive) map_.observeCells(body, {});
+  const bool sweeps = options_.ownSweepEvery > 0;
+  if (sweeps && view.lidar.points && view.lidar.time != lastSweepTime_) {
+    lastSweepTime_ = view.lidar.time;
+    if (sweepCounter_++ % static_cast<size_t>(options_.ownSweepEvery) == 0 &&
+        !view.lidar.points->empty()) {
+      map_.insertScan(view.lidar.sensorPosition, withoutUavs(*view.lidar.points));
+      ++scansInserted_;
+    }
+  }
+  if (!sweeps)
+    for (const auto& frame : view.ownKeyFrames)
+      insert(frame);
+  for (const auto& frame : view.receivedKeyFrames)
+    insert(frame);
+}
+
+void RobotMap::openColumn(const Vec3& bottom, double height, double radius) {
+  const double res = grid_.resolution();
+  const mapping::Index3 low = grid_.cellOf(bottom - Vec3(radius, radius, 0));
+  const mapping::Index3 high = grid_.cellOf(bottom + Vec3(radius, radius, height));
+  for (int z = std::max(0, low.z()); z <= std::min(grid_.size().z() - 1, high.z()); ++z)
+    for (int y = std::max(0, low.y()); y <= std::min(grid_.size().y() - 1, high.y()); ++y)
+      for (int x = std::max(0, low.x()); x <= std::min(grid_.size().x() - 1, high.x()); ++x) {
+        const mapping::Index3 cell(x, y, z);
+        if ((grid_.centre(cell) - bottom).head<2>().norm() <= radius + 0.5 * res)
+          blockUnknown_[grid_.linear(cell)] = 0;
+      }
+  builtRevision_ = ~uint64_t{0};  // rebuild at the next refresh
+}
+
+bool RobotMap::refresh(double time, bool force) {
+  if (!force && (map_.revision() == builtRevision_ || time - lastRebuild_ < options_.rebuildPeriod))
+    return false;
+  lastRebuild_ = time;
+  rebuild();
+  return true;
+}
+
+void RobotMap::rebuild() {
+  builtRevision_ = map_.revision();
+  mapping::VoxelGrid snapshot =
+      map_.knownCount() == 0
+          ? mapping::VoxelGrid(grid_.origin(), grid_.resolution(), grid_.size())
+          : map_.toVoxelGrid(grid_.origin(),
+                             grid_.origin() + grid_.size().cast<double>() * grid_.resolution(),
+                             grid_.resolution());
+  COINSPECT_ASSERT(snapshot.size() == grid_.size());
+  // Same linear layout in both grids (same origin, resolution and size): z, then y, then x.
+  size_t i = 0;
+  const mapping::Index3 size = grid_.size();
+  for (int z = 0; z < size.z(); ++z)
+    for (int y = 0; y < size.y(); ++y)
+      for (int x = 0; x < size.x(); ++x, ++i) {
+        const mapping::Index3 cell(x, y, z);
+        mapping::CellState state = snapshot.state(cell);
+        if (state == mapping::CellState::Unknown && !blockUnknown_[i])
+          state = mapping::CellState::Free;
+        grid_.set(cell, state);
+      }
+  grid_.computeClearance(options_.clearanceCap, true);
+  ++gridVersion_;
+}
+
+}  // namespace coinspect::strategies::runtime
