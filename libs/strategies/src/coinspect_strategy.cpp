@@ -10,6 +10,7 @@
 #include "coinspect/planning/routing_tsp.h"
 #include "coinspect/planning/viewpoint.h"
 #include "coinspect/strategies/runtime/box_geometry.h"
+#include "coinspect/strategies/runtime/camera_aim.h"
 
 namespace coinspect::strategies::coinspect_strategy {
 
@@ -27,11 +28,6 @@ double readPositive(const Config& config, const std::string& key, double fallbac
   if (!(value > 0.0) || !std::isfinite(value))
     throw InputError(config.source(), "[coinspect] " + key, "must be a finite number > 0");
   return value;
-}
-
-double headingTo(const Vec3& from, const Vec3& to, double fallback) {
-  const Vec3 d = to - from;
-  return std::hypot(d.x(), d.y()) > 1e-6 ? std::atan2(d.y(), d.x()) : fallback;
 }
 
 }  // namespace
@@ -185,7 +181,7 @@ void CoinspectStrategy::planInspection(const agent::AgentView& view) {
     const auto& v = views[chosen[tour.order[k] - 1]];
     Stop stop;
     stop.target = v.target;
-    stop.yaw = headingTo(v.camera, v.target, view.odometry.yaw);
+    stop.yaw = runtime::headingTowards(v.camera, v.target, view.odometry.yaw);
     stop.body = v.camera - Eigen::AngleAxisd(stop.yaw, Vec3::UnitZ()) * camera_.positionInBody;
     for (const uint32_t j : v.covered)
       stop.patches.push_back(patches[j].key);
@@ -281,7 +277,7 @@ agent::AgentCommand CoinspectStrategy::command(const agent::AgentView& view,
       if (d < best) best = d, target = p;
     }
   }
-  setpoint.yaw = headingTo(odometry.position, target, odometry.yaw);
+  setpoint.yaw = runtime::headingTowards(odometry.position, target, odometry.yaw);
   const Vec3 cameraPosition =
       odometry.position + Eigen::AngleAxisd(odometry.yaw, Vec3::UnitZ()) * camera_.positionInBody;
   const auto aim = planning::aimGimbal(cameraPosition, odometry.yaw, target);

@@ -83,15 +83,6 @@ std::optional<DemoPathsOptions> DemoPathsOptions::read(const Config& config,
   return options;
 }
 
-AimAngles aimGimbal(const Vec3& camera, double bodyYaw, const Vec3& target) {
-  // Direction in the stabilizer frame S = Rz(bodyYaw).
-  const Vec3 d = Eigen::AngleAxisd(-bodyYaw, Vec3::UnitZ()) * (target - camera);
-  AimAngles out;
-  out.yaw = std::atan2(d.y(), d.x());
-  out.pitch = std::atan2(-d.z(), std::hypot(d.x(), d.y()));
-  return out;
-}
-
 DemoPaths::DemoPaths(std::optional<DemoPathsOptions> options) : options_(std::move(options)) {}
 
 double DemoPaths::decisionRate() const {

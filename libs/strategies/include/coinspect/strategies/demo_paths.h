@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "coinspect/agent/strategy.h"
+#include "coinspect/planning/viewpoint.h"
 
 namespace coinspect::strategies {
 
@@ -46,14 +47,9 @@ struct DemoPathsOptions {
   static std::optional<DemoPathsOptions> read(const Config& config, const std::string& unit);
 };
 
-// Gimbal angles (pitch, yaw; rad, unclamped) that point the optical axis from `camera` to
-// `target` for a body with heading `bodyYaw`: the stabilizer frame is Rz(bodyYaw), and the
-// camera axis Rz(a) Ry(b) e_x = (cos a cos b, sin a cos b, -sin b) in it.
-struct AimAngles {
-  double pitch = 0.0;
-  double yaw = 0.0;
-};
-AimAngles aimGimbal(const Vec3& camera, double bodyYaw, const Vec3& target);
+// Gimbal angles that put `target` on the optical axis: planning's (one convention everywhere).
+using planning::AimAngles;
+using planning::aimGimbal;
 
 class DemoPaths : public agent::Strategy {
  public:
