@@ -95,6 +95,21 @@ inline void initLane(RTCRay16& packet, size_t k, const Eigen::Vector3f& origin,
   packet.flags[k] = 0;
 }
 
+RTCRay16& rayOf(RTCRay16& packet) {
+  return packet;
+}
+RTCRay16& rayOf(RTCRayHit16& packet) {
+  return packet.ray;
+}
+
+// A lane no query uses. Embree honours the valid mask only where the CPU has native 16-wide
+// kernels (AVX-512); elsewhere rtcIntersect16/rtcOccluded16 go through its ray-stream path,
+// which takes every lane with tnear <= tfar as active and asserts that it is a valid ray. So
+// idle lanes get a finite ray with tfar < tnear, never leftovers of an earlier packet.
+inline void idleLane(RTCRay16& packet, size_t k) {
+  initLane(packet, k, Eigen::Vector3f::Zero(), Eigen::Vector3f::UnitZ(), -1.0f);
+}
+
 // Runs n queries through Embree kPacket at a time, without allocating. setUp(i, packet, k) fills
 // lane k for query i and returns false when that query needs no ray; trace(valid, packet) calls
 // Embree; collect(i, packet, k) then reads the result of each lane that was traced.
@@ -104,8 +119,10 @@ inline void tracePackets(size_t n, const SetUp& setUp, const Trace& trace, const
   alignas(64) int valid[kPacket];
   for (size_t start = 0; start < n; start += kPacket) {
     const size_t count = std::min(kPacket, n - start);
-    for (size_t k = 0; k < kPacket; ++k)
+    for (size_t k = 0; k < kPacket; ++k) {
       valid[k] = k < count && setUp(start + k, packet, k) ? -1 : 0;
+      if (valid[k] == 0) idleLane(rayOf(packet), k);
+    }
     trace(valid, packet);
     for (size_t k = 0; k < count; ++k)
       if (valid[k] != 0) collect(start + k, packet, k);
