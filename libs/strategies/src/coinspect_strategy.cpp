@@ -17,11 +17,20 @@ namespace coinspect::strategies::coinspect_strategy {
 namespace {
 
 constexpr double kNever = -1e300;
-constexpr double kFaceSpacing = 4.0;  // m between work-partition samples of the box faces
-constexpr double kPatchSize = 2.0;    // m, surface patches the coverage plans over
-constexpr double kReached = 1.2;      // m from a stop's body position that counts as there
-constexpr size_t kStopsPerPlan = 8;   // viewpoints flown per plan (each leg may need a search)
-constexpr int kAttemptsPerPatch = 2;  // plans that may pick a patch before it is given up
+constexpr double kFaceSpacing = 4.0;      // m between work-partition samples of the box faces
+constexpr double kPatchSize = 2.0;        // m, surface patches the coverage plans over
+constexpr double kReached = 1.2;          // m from a stop's body position that counts as there
+constexpr size_t kStopsPerPlan = 8;       // viewpoints flown per plan (each leg may need a search)
+constexpr size_t kPatchesPerPlan = 120;   // nearest uninspected patches a plan covers
+constexpr int kAttemptsPerPatch = 2;      // plans that may pick a patch before it is given up
+constexpr size_t kFramesPerDecision = 4;  // key frames inserted per decision (~2 ms each at 1 m)
+
+std::vector<std::string> fleetNames(const std::vector<agent::FleetMember>& fleet) {
+  std::vector<std::string> names;
+  for (const auto& member : fleet)
+    names.push_back(member.name);
+  return names;
+}
 
 double readPositive(const Config& config, const std::string& key, double fallback) {
   const double value = config.getDouble("coinspect", key, fallback);
@@ -57,7 +66,8 @@ CoinspectStrategy::CoinspectStrategy(const agent::StrategyContext& context,
       fleet_(context.fleet),
       camera_(context.camera),
       radius_(context.collisionRadius),
-      contact_(options.delivery) {
+      contact_(options.delivery),
+      relay_(RelayOptions{}, fleetNames(context.fleet), context.unitIndex) {
   optics_.focalLength = camera_.focalLength;
   optics_.pixelSize = camera_.pixelSize;
   optics_.exposure = camera_.exposureTime;
@@ -70,17 +80,15 @@ void CoinspectStrategy::initialise(const agent::AgentView& view) {
   initialised_ = true;
   const double groundZ = view.odometry.position.z() - 0.1;
   runtime::RobotMapOptions mapOptions;
-  mapOptions.mapResolution = 1.0;  // key frames only: ~2 ms each at 1 m (doc/mapping.md)
+  mapOptions.mapResolution = 1.0;        // key frames only: ~2 ms each at 1 m (doc/mapping.md)
+  mapOptions.keyFramesFromView = false;  // they come through the relay
   map_ = std::make_unique<runtime::RobotMap>(mapOptions, *view.boxes, groundZ);
 
   runtime::FlightOptions flightOptions;
   flightOptions.radius = radius_;
   flightOptions.limits.speed = options_.transitSpeed;
   flightOptions.takeoffHeight = 6.0;
-  std::vector<std::string> names;
-  for (const auto& member : fleet_)
-    names.push_back(member.name);
-  flight_ = std::make_unique<runtime::Flight>(flightOptions, names, self_);
+  flight_ = std::make_unique<runtime::Flight>(flightOptions, fleetNames(fleet_), self_);
 
   // The same partition in every robot: UAVs in fleet order, explorers with less capacity.
   std::vector<double> capacities;
@@ -136,9 +144,9 @@ void CoinspectStrategy::planInspection(const agent::AgentView& view) {
         surface.push_back(voxel);
         break;
       }
-  std::vector<planning::InspectionPatch> patches;
+  std::vector<planning::InspectionPatch> patches, others;
   for (const auto& patch : planning::groupSurface(surface, kPatchSize)) {
-    if (inspected_.count(patch.key)) continue;
+    if (inspected_.count(patch.key) || progress_.done(patch.key)) continue;
     auto owner = owner_.find(patch.key);
     if (owner == owner_.end()) {
       size_t best = 0;
@@ -149,7 +157,21 @@ void CoinspectStrategy::planInspection(const agent::AgentView& view) {
       }
       owner = owner_.emplace(patch.key, work_.empty() ? 0u : workRegion_[best]).first;
     }
-    if (owner->second == region_) patches.push_back(patch);
+    (owner->second == region_ ? patches : others).push_back(patch);
+  }
+  // Own region finished (as far as mapped): help with what nobody reported done yet.
+  if (patches.empty()) patches = std::move(others);
+  // The set cover grows with candidates x patches and a plan flies only kStopsPerPlan views:
+  // the patches nearest to the robot are enough.
+  const Vec3 here = view.odometry.position;
+  if (patches.size() > kPatchesPerPlan) {
+    std::partial_sort(patches.begin(), patches.begin() + kPatchesPerPlan, patches.end(),
+                      [&](const auto& a, const auto& b) {
+                        const double da = (a.centre - here).squaredNorm();
+                        const double db = (b.centre - here).squaredNorm();
+                        return da != db ? da < db : a.key < b.key;
+                      });
+    patches.resize(kPatchesPerPlan);
   }
 
   stops_.clear();
@@ -163,7 +185,6 @@ void CoinspectStrategy::planInspection(const agent::AgentView& view) {
   if (views.empty()) return;
 
   // The nearest views first (by straight distance), ordered by an open tour from here.
-  const Vec3 here = view.odometry.position;
   std::vector<size_t> chosen(views.size());
   for (size_t i = 0; i < views.size(); ++i)
     chosen[i] = i;
@@ -196,16 +217,28 @@ void CoinspectStrategy::advanceStops(const Vec3& position) {
   for (size_t i = 0; i < std::min<size_t>(3, stops_.size()); ++i)
     if ((position - stops_[i].body).norm() < kReached) {
       for (size_t k = 0; k <= i; ++k)
-        inspected_.insert(stops_[k].patches.begin(), stops_[k].patches.end());
+        for (const uint64_t key : stops_[k].patches) {
+          inspected_.insert(key);
+          progress_.markViewed(key);
+        }
       stops_.erase(stops_.begin(), stops_.begin() + static_cast<long>(i) + 1);
       return;
     }
 }
 
 agent::AgentCommand CoinspectStrategy::decide(const agent::AgentView& view) {
-  agent::AgentCommand out;
-  if (role_ == agent::Role::GroundStation || !view.alive || !view.boxes) return out;
+  if (!view.alive || !view.boxes) return {};
+  auto messages = relay_.exchange(view);
+  if (auto report = progress_.exchange(view)) messages.push_back(std::move(*report));
+  if (role_ == agent::Role::GroundStation) {  // a relay only: it sees every robot that delivers
+    relay_.takeNew(std::numeric_limits<size_t>::max());  // it keeps no map
+    agent::AgentCommand out;
+    out.messages = std::move(messages);
+    return out;
+  }
   if (!initialised_) initialise(view);
+  for (const auto& frame : relay_.takeNew(kFramesPerDecision))
+    map_->insertFrame(*frame);
   map_->update(view);
   map_->refresh(view.time);
   contact_.observe(view);
@@ -257,7 +290,9 @@ agent::AgentCommand CoinspectStrategy::decide(const agent::AgentView& view) {
       if (best > 2.0) flight_->goTo(staging, options_.transitSpeed);
     }
   }
-  return command(view, flight_->step(view, *map_));
+  auto out = command(view, flight_->step(view, *map_));
+  out.messages = std::move(messages);
+  return out;
 }
 
 agent::AgentCommand CoinspectStrategy::command(const agent::AgentView& view,

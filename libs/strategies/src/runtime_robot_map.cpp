@@ -66,27 +66,37 @@ RobotMap::RobotMap(const RobotMapOptions& options, const std::vector<BoxView>& b
   rebuild();
 }
 
-void RobotMap::update(const agent::AgentView& view) {
-  // Other UAVs show up in LiDAR scans: points within kUavRadius of a unit in sight (or of this
-  // one) are dropped, so moving robots leave no phantom obstacles in the map.
+std::vector<Vec3> uavPositions(const agent::AgentView& view) {
   std::vector<Vec3> uavs = {view.odometry.position};
   for (const auto& neighbour : view.neighbours)
     uavs.push_back(neighbour.odometry.position);
+  return uavs;
+}
+
+std::vector<Eigen::Vector3f> withoutUavPoints(const std::vector<Eigen::Vector3f>& points,
+                                              const std::vector<Vec3>& uavs) {
   std::vector<Eigen::Vector3f> kept;
-  const auto withoutUavs =
-      [&](const std::vector<Eigen::Vector3f>& points) -> const std::vector<Eigen::Vector3f>& {
-    kept.clear();
-    for (const auto& point : points) {
-      const Vec3 p = point.cast<double>();
-      if (std::none_of(uavs.begin(), uavs.end(),
-                       [&](const Vec3& uav) { return (p - uav).norm() < kUavRadius; }))
-        kept.push_back(point);
-    }
-    return kept;
-  };
+  kept.reserve(points.size());
+  for (const auto& point : points) {
+    const Vec3 p = point.cast<double>();
+    if (std::none_of(uavs.begin(), uavs.end(),
+                     [&](const Vec3& uav) { return (p - uav).norm() < kUavRadius; }))
+      kept.push_back(point);
+  }
+  return kept;
+}
+
+void RobotMap::insertFrame(const agent::KeyFrame& frame) {
+  if (frame.points.empty()) return;
+  map_.insertScan(frame.position, frame.points);
+  ++scansInserted_;
+}
+
+void RobotMap::update(const agent::AgentView& view) {
+  const std::vector<Vec3> uavs = uavPositions(view);
   const auto insert = [&](const agent::KeyFrameView& frame) {
     if (!frame || frame->points.empty()) return;
-    map_.insertScan(frame->position, withoutUavs(frame->points));
+    map_.insertScan(frame->position, withoutUavPoints(frame->points, uavs));
     ++scansInserted_;
   };
   // Where the robot is, there is no obstacle: the cells its body overlaps are observed free,
@@ -107,10 +117,11 @@ void RobotMap::update(const agent::AgentView& view) {
     lastSweepTime_ = view.lidar.time;
     if (sweepCounter_++ % static_cast<size_t>(options_.ownSweepEvery) == 0 &&
         !view.lidar.points->empty()) {
-      map_.insertScan(view.lidar.sensorPosition, withoutUavs(*view.lidar.points));
+      map_.insertScan(view.lidar.sensorPosition, withoutUavPoints(*view.lidar.points, uavs));
       ++scansInserted_;
     }
   }
+  if (!options_.keyFramesFromView) return;
   if (!sweeps)
     for (const auto& frame : view.ownKeyFrames)
       insert(frame);

@@ -8,6 +8,11 @@
 // - Inspect at full quality: viewpoints at the distance where q_res ~ 1, chosen by greedy set
 //   cover of the mapped surface patches, visited in a short open tour at a speed that keeps
 //   q_blur = 1, with the body facing the surface and the gimbal on it.
+// - Share the map: every robot (the ground station too) keeps the key frames it got and
+//   relays them to neighbours that lack them (keyframe_relay.h), so a photographer maps what an
+//   explorer saw out of its sight.
+// - Rebalance: robots report the patches they viewed (shared_progress.h); one whose region is
+//   finished helps with the rest of the fleet's work, which also covers a robot that failed.
 // - Deliver: the score counts only once the ground station merged a robot's log, so robots go
 //   back into its line of sight periodically and before the end.
 //
@@ -32,6 +37,8 @@
 #include "coinspect/planning/camera_limits.h"
 #include "coinspect/planning/coverage.h"
 #include "coinspect/strategies/coinspect/gcs_contact.h"
+#include "coinspect/strategies/coinspect/keyframe_relay.h"
+#include "coinspect/strategies/coinspect/shared_progress.h"
 #include "coinspect/strategies/coinspect/work_partition.h"
 #include "coinspect/strategies/runtime/flight.h"
 #include "coinspect/strategies/runtime/robot_map.h"
@@ -88,6 +95,8 @@ class CoinspectStrategy : public agent::Strategy {
   std::vector<uint32_t> workRegion_;
   uint32_t region_ = 0;
   GcsContact contact_;
+  KeyFrameRelay relay_;
+  SharedProgress progress_;
 
   Task task_ = Task::Inspect;
   Task resume_ = Task::Inspect;  // what to go back to after a delivery

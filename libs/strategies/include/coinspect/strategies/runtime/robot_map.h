@@ -39,7 +39,17 @@ struct RobotMapOptions {
   // m: cells within this distance of the robot are observed free at every update (a robot's
   // body occupies them, so nothing else can); 0 disables it.
   double selfClearRadius = 1.0;
+  // update() inserts the view's own and received key frames; false when the strategy hands
+  // them over itself (insertFrame), e.g. after relaying them between robots.
+  bool keyFramesFromView = true;
 };
+
+// The UAVs a robot knows to be near now: itself and its neighbours in line of sight.
+std::vector<Vec3> uavPositions(const agent::AgentView& view);
+// `points` without those within 1.5 m of a UAV (LiDAR returns of rotors and bodies: moving
+// robots would otherwise leave phantom obstacles in the map).
+std::vector<Eigen::Vector3f> withoutUavPoints(const std::vector<Eigen::Vector3f>& points,
+                                              const std::vector<Vec3>& uavs);
 
 class RobotMap {
  public:
@@ -48,6 +58,8 @@ class RobotMap {
 
   // Inserts what the view brings: own sweeps or own key frames, and received key frames.
   void update(const agent::AgentView& view);
+  // Inserts a key frame as it is (its UAV points already removed).
+  void insertFrame(const agent::KeyFrame& frame);
   // Rebuilds the planning grid when the map changed since the last rebuild and `rebuildPeriod`
   // has passed since it (or when `force`). True when it rebuilt.
   bool refresh(double time, bool force = false);
