@@ -52,8 +52,9 @@ void runStrategy(benchmark::State& state, const std::string& strategy) {
 
 int main(int argc, char** argv) {
   for (const char* strategy : kStrategies)
-    benchmark::RegisterBenchmark((std::string("BM_DecisionLatency/") + strategy).c_str(),
-                                 [strategy](benchmark::State& state) { runStrategy(state, strategy); })
+    benchmark::RegisterBenchmark(
+        (std::string("BM_DecisionLatency/") + strategy).c_str(),
+        [strategy](benchmark::State& state) { runStrategy(state, strategy); })
         ->Unit(benchmark::kSecond)
         ->Iterations(1);
   benchmark::Initialize(&argc, argv);

@@ -9,6 +9,7 @@
 #include "coinspect/core/error.h"
 #include "coinspect/planning/routing_tsp.h"
 #include "coinspect/planning/viewpoint.h"
+#include "coinspect/strategies/coinspect/patch_choice.h"
 #include "coinspect/strategies/runtime/box_geometry.h"
 #include "coinspect/strategies/runtime/camera_aim.h"
 
@@ -144,9 +145,9 @@ void CoinspectStrategy::planInspection(const agent::AgentView& view) {
         surface.push_back(voxel);
         break;
       }
-  std::vector<planning::InspectionPatch> patches, others;
-  for (const auto& patch : planning::groupSurface(surface, kPatchSize)) {
-    if (inspected_.count(patch.key) || progress_.done(patch.key)) continue;
+  const auto grouped = planning::groupSurface(surface, kPatchSize);
+  std::vector<uint32_t> owners;
+  for (const auto& patch : grouped) {
     auto owner = owner_.find(patch.key);
     if (owner == owner_.end()) {
       size_t best = 0;
@@ -157,22 +158,13 @@ void CoinspectStrategy::planInspection(const agent::AgentView& view) {
       }
       owner = owner_.emplace(patch.key, work_.empty() ? 0u : workRegion_[best]).first;
     }
-    (owner->second == region_ ? patches : others).push_back(patch);
+    owners.push_back(owner->second);
   }
-  // Own region finished (as far as mapped): help with what nobody reported done yet.
-  if (patches.empty()) patches = std::move(others);
-  // The set cover grows with candidates x patches and a plan flies only kStopsPerPlan views:
-  // the patches nearest to the robot are enough.
   const Vec3 here = view.odometry.position;
-  if (patches.size() > kPatchesPerPlan) {
-    std::partial_sort(patches.begin(), patches.begin() + kPatchesPerPlan, patches.end(),
-                      [&](const auto& a, const auto& b) {
-                        const double da = (a.centre - here).squaredNorm();
-                        const double db = (b.centre - here).squaredNorm();
-                        return da != db ? da < db : a.key < b.key;
-                      });
-    patches.resize(kPatchesPerPlan);
-  }
+  const auto patches = choosePatches(
+      grouped, owners, region_,
+      [&](uint64_t key) { return inspected_.count(key) != 0 || progress_.done(key); }, here,
+      kPatchesPerPlan);
 
   stops_.clear();
   planning::CoverageOptions coverage;
