@@ -72,7 +72,14 @@ void intersectPackets16(RTCScene scene, const float* origins, const float* direc
     const size_t n = std::min<size_t>(16, count - start);
     for (size_t k = 0; k < 16; ++k) {
       valid[k] = k < n ? -1 : 0;
-      if (k >= n) continue;
+      if (k >= n) {  // without AVX-512 Embree ignores `valid` and traces lanes with tnear <= tfar
+        p.ray.org_x[k] = p.ray.org_y[k] = p.ray.org_z[k] = 0.0f;
+        p.ray.dir_x[k] = p.ray.dir_y[k] = 0.0f;
+        p.ray.dir_z[k] = 1.0f;
+        p.ray.tnear[k] = 0.0f;
+        p.ray.tfar[k] = -1.0f;
+        continue;
+      }
       const float* o = &origins[3 * (start + k)];
       const float* d = &directions[3 * (start + k)];
       p.ray.org_x[k] = o[0];

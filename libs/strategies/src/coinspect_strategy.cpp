@@ -49,9 +49,9 @@ CoinspectOptions CoinspectOptions::read(const Config& config) {
     throw InputError(config.source(), "[coinspect] explore_time", "must be a finite number >= 0");
   o.exploreStandoff = readPositive(config, "explore_standoff", o.exploreStandoff);
   o.viewDistance = readPositive(config, "view_distance", o.viewDistance);
-  if (o.viewDistance > 1.5)
+  if (o.viewDistance > 2.0)
     throw InputError(config.source(), "[coinspect] view_distance",
-                     "is a fraction of the full-resolution distance: at most 1.5");
+                     "is a fraction of the full-resolution distance: at most 2");
   o.replanPeriod = readPositive(config, "replan_period", o.replanPeriod);
   o.transitSpeed = readPositive(config, "transit_speed", o.transitSpeed);
   o.explorerCapacity = readPositive(config, "explorer_capacity", o.explorerCapacity);
@@ -105,31 +105,45 @@ void CoinspectStrategy::initialise(const agent::AgentView& view) {
   if (task_ == Task::Explore) flight_->follow(explorationRoute(view), options_.transitSpeed);
 }
 
-// Orbits around the bounds of all boxes at the standoff: explorer k of n takes every n-th
-// layer, alternating directions, so two explorers map two heights on opposite sides.
+// Orbits around each box at the standoff, so the LiDAR sees faces that look into the gaps
+// between structures (an orbit around all boxes at once never does): the boxes, sorted along x,
+// are dealt to the explorers in contiguous runs (explorer k of n takes the k-th run); a box gets
+// one layer at mid-height, or two (at 30 % and 75 %) when taller than 20 m; the boxes are
+// flown nearest first.
 std::vector<Vec3> CoinspectStrategy::explorationRoute(const agent::AgentView& view) const {
-  const auto region = runtime::missionRegion(*view.boxes, 0.0, view.odometry.position.z());
-  agent::BoxView all;
-  all.center = region.centre();
-  all.size = region.size();
   size_t explorers = 0, rank = 0;
   for (size_t i = 0; i < fleet_.size(); ++i)
     if (fleet_[i].role == agent::Role::Explorer) {
       if (i == self_) rank = explorers;
       ++explorers;
     }
-  const double top = region.max.z();
-  const double bottom = view.odometry.position.z();
-  const std::vector<double> layers = {bottom + 0.3 * (top - bottom),
-                                      bottom + 0.75 * (top - bottom)};
+  std::vector<agent::BoxView> boxes = *view.boxes;
+  std::stable_sort(boxes.begin(), boxes.end(),
+                   [](const auto& a, const auto& b) { return a.center.x() < b.center.x(); });
+  const size_t n = boxes.size(), share = std::max<size_t>(1, explorers);
+  std::vector<agent::BoxView> mine(boxes.begin() + static_cast<long>(rank * n / share),
+                                   boxes.begin() + static_cast<long>((rank + 1) * n / share));
+  const double lowest = view.odometry.position.z() + 3.0;
   std::vector<Vec3> route;
-  for (size_t layer = rank % layers.size(); layer < layers.size();
-       layer += std::max<size_t>(1, explorers)) {
-    auto orbit = runtime::standoffOrbit(all, layers[layer], options_.exploreStandoff, 6.0,
-                                        route.empty() ? view.odometry.position : route.back());
-    if (rank % 2 == 1) std::reverse(orbit.begin() + 1, orbit.end());
-    orbit.push_back(orbit.front());
-    route.insert(route.end(), orbit.begin(), orbit.end());
+  Vec3 from = view.odometry.position;
+  while (!mine.empty()) {
+    const auto nearest =
+        std::min_element(mine.begin(), mine.end(), [&](const auto& a, const auto& b) {
+          return runtime::distanceToBox(a, from) < runtime::distanceToBox(b, from);
+        });
+    const auto bounds = runtime::boxBounds(*nearest);
+    const double bottom = std::max(bounds.min.z(), lowest), top = bounds.max.z();
+    const std::vector<double> layers =
+        top - bottom > 20.0
+            ? std::vector<double>{bottom + 0.3 * (top - bottom), bottom + 0.75 * (top - bottom)}
+            : std::vector<double>{0.5 * (bottom + std::max(bottom, top))};
+    for (const double z : layers) {
+      auto orbit = runtime::standoffOrbit(*nearest, z, options_.exploreStandoff, 6.0, from);
+      orbit.push_back(orbit.front());
+      route.insert(route.end(), orbit.begin(), orbit.end());
+      from = route.back();
+    }
+    mine.erase(nearest);
   }
   return route;
 }
@@ -170,7 +184,7 @@ void CoinspectStrategy::planInspection(const agent::AgentView& view) {
   planning::CoverageOptions coverage;
   const double fullResolution = planning::fullResolutionDistance(optics_);
   coverage.distance = options_.viewDistance * fullResolution;
-  coverage.maxDistance = 1.1 * fullResolution;
+  coverage.maxDistance = std::max(1.1, options_.viewDistance + 0.2) * fullResolution;
   coverage.clearance = flight_->requiredClearance(grid);
   coverage.groundZ = map_->region().min.z();
   const auto views = planning::coverPatches(patches, grid, coverage);

@@ -20,7 +20,7 @@ TEST(CoinspectOptions, ReadsKeysStrictly) {
   config.requireAllKeysUsed();
   for (const auto& [text, key] : std::vector<std::pair<std::string, std::string>>{
            {"explore_time = -1", "explore_time"},
-           {"view_distance = 2", "view_distance"},
+           {"view_distance = 2.5", "view_distance"},
            {"transit_speed = nan", "transit_speed"},
            {"explorer_capacity = 0", "explorer_capacity"}}) {
     const auto bad = Config::fromText("[coinspect]\n" + text + "\n", "bad.ini");
