@@ -3,6 +3,8 @@
 #include "coinspect/strategies/caric_baseline.h"
 #include "coinspect/strategies/coinspect/coinspect_strategy.h"
 #include "coinspect/strategies/demo_paths.h"
+#include "coinspect/strategies/kios/kios_strategy.h"
+#include "coinspect/strategies/star/star_strategy.h"
 
 namespace coinspect::strategies {
 
@@ -10,6 +12,8 @@ void registerBuiltinStrategies(agent::StrategyRegistry& registry) {
   registerCaricBaseline(registry);
   registerDemoPaths(registry);
   coinspect_strategy::registerCoinspect(registry);
+  kios::registerKios(registry);
+  star::registerStar(registry);
 }
 
 }  // namespace coinspect::strategies

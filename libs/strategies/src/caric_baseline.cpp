@@ -7,6 +7,7 @@
 #include "coinspect/core/error.h"
 #include "coinspect/planning/camera_limits.h"
 #include "coinspect/strategies/runtime/camera_aim.h"
+#include "coinspect/strategies/runtime/option_reader.h"
 
 namespace coinspect::strategies {
 
@@ -18,20 +19,7 @@ constexpr double kHomeReserve = 20.0;  // s added to the estimated way home
 
 double readDouble(const Config& config, const std::string& key, double fallback, double low,
                   double high, const std::string& range) {
-  const double value = config.getDouble(kSection, key, fallback);
-  if (!(value >= low && value <= high))
-    throw InputError(config.source(), std::string("[") + kSection + "] " + key,
-                     "must be " + range + ", got " + std::to_string(value));
-  return value;
-}
-
-planning::CameraOptics opticsOf(const agent::CameraInfo& camera) {
-  planning::CameraOptics optics;
-  if (camera.focalLength > 0.0) optics.focalLength = camera.focalLength;
-  if (camera.pixelSize > 0.0) optics.pixelSize = camera.pixelSize;
-  if (camera.exposureTime > 0.0) optics.exposure = camera.exposureTime;
-  if (camera.desiredMmPerPixel > 0.0) optics.desiredMmPerPixel = camera.desiredMmPerPixel;
-  return optics;
+  return runtime::readNumber(config, kSection, key, fallback, low, high, range);
 }
 
 }  // namespace
@@ -97,13 +85,15 @@ CaricBaseline::CaricBaseline(const CaricBaselineOptions& options,
 
 double CaricBaseline::standoff() const {
   if (role_ == agent::Role::Explorer) return options_.exploreDistance;
-  return options_.inspectDistance > 0.0 ? options_.inspectDistance
-                                        : planning::fullResolutionDistance(opticsOf(camera_));
+  return options_.inspectDistance > 0.0
+             ? options_.inspectDistance
+             : planning::fullResolutionDistance(runtime::cameraOptics(camera_));
 }
 
 double CaricBaseline::cruiseSpeed() const {
   if (role_ == agent::Role::Explorer) return options_.maxSpeed;
-  return std::min(options_.maxSpeed, planning::blurFreeSpeed(opticsOf(camera_), standoff()));
+  return std::min(options_.maxSpeed,
+                  planning::blurFreeSpeed(runtime::cameraOptics(camera_), standoff()));
 }
 
 void CaricBaseline::makePlan(const agent::AgentView& view) {

@@ -69,10 +69,7 @@ CoinspectStrategy::CoinspectStrategy(const agent::StrategyContext& context,
       radius_(context.collisionRadius),
       contact_(options.delivery),
       relay_(RelayOptions{}, fleetNames(context.fleet), context.unitIndex) {
-  optics_.focalLength = camera_.focalLength;
-  optics_.pixelSize = camera_.pixelSize;
-  optics_.exposure = camera_.exposureTime;
-  optics_.desiredMmPerPixel = camera_.desiredMmPerPixel;
+  optics_ = runtime::cameraOptics(camera_);
 }
 
 CoinspectStrategy::~CoinspectStrategy() = default;

@@ -32,4 +32,13 @@ double headingTowards(const Vec3& from, const Vec3& target, double fallback) {
   return std::hypot(d.x(), d.y()) > 1e-6 ? std::atan2(d.y(), d.x()) : fallback;
 }
 
+planning::CameraOptics cameraOptics(const agent::CameraInfo& camera) {
+  planning::CameraOptics optics;
+  if (camera.focalLength > 0.0) optics.focalLength = camera.focalLength;
+  if (camera.pixelSize > 0.0) optics.pixelSize = camera.pixelSize;
+  if (camera.exposureTime > 0.0) optics.exposure = camera.exposureTime;
+  if (camera.desiredMmPerPixel > 0.0) optics.desiredMmPerPixel = camera.desiredMmPerPixel;
+  return optics;
+}
+
 }  // namespace coinspect::strategies::runtime

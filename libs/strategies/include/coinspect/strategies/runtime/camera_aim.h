@@ -5,6 +5,7 @@
 
 #include "coinspect/agent/commands.h"
 #include "coinspect/agent/observations.h"
+#include "coinspect/planning/camera_limits.h"
 
 namespace coinspect::strategies::runtime {
 
@@ -17,6 +18,10 @@ Vec3 cameraPosition(const agent::Odometry& odometry, const agent::CameraInfo& ca
 // `gimbal` (a zero limit means none is known).
 agent::GimbalCommand aimCamera(const agent::Odometry& odometry, const agent::CameraInfo& camera,
                                const agent::GimbalState& gimbal, const Vec3& target);
+
+// The camera's optics for the planning library (focal length, pixel size, exposure, r_des);
+// a value the camera does not give (zero) keeps planning's default.
+planning::CameraOptics cameraOptics(const agent::CameraInfo& camera);
 
 // Heading (rad) from `from` towards `target` in the ground plane; `fallback` when straight above
 // or below.
