@@ -139,9 +139,8 @@ std::optional<IdRanges> decodeDigest(const std::vector<uint8_t>& bytes, size_t f
   return ranges;
 }
 
-KeyFrameRelay::KeyFrameRelay(const RelayOptions& options, std::vector<std::string> fleet,
-                             size_t self)
-    : options_(options), fleet_(std::move(fleet)), self_(self) {}
+KeyFrameRelay::KeyFrameRelay(const RelayOptions& options, std::vector<std::string> fleet)
+    : options_(options), fleet_(std::move(fleet)) {}
 
 bool KeyFrameRelay::add(agent::KeyFrameView frame, uint16_t producer) {
   const auto [it, inserted] = frames_.emplace(std::make_pair(producer, frame->id), frame);

@@ -62,15 +62,9 @@ CoinspectOptions CoinspectOptions::read(const Config& config) {
 CoinspectStrategy::CoinspectStrategy(const agent::StrategyContext& context,
                                      const CoinspectOptions& options)
     : options_(options),
-      role_(context.role),
-      self_(context.unitIndex),
-      fleet_(context.fleet),
-      camera_(context.camera),
-      radius_(context.collisionRadius),
+      unit_(context),
       contact_(options.delivery),
-      relay_(RelayOptions{}, fleetNames(context.fleet), context.unitIndex) {
-  optics_ = runtime::cameraOptics(camera_);
-}
+      relay_(RelayOptions{}, fleetNames(context.fleet)) {}
 
 CoinspectStrategy::~CoinspectStrategy() = default;
 
@@ -83,22 +77,23 @@ void CoinspectStrategy::initialise(const agent::AgentView& view) {
   map_ = std::make_unique<runtime::RobotMap>(mapOptions, *view.boxes, groundZ);
 
   runtime::FlightOptions flightOptions;
-  flightOptions.radius = radius_;
+  flightOptions.radius = unit_.radius;
   flightOptions.limits.speed = options_.transitSpeed;
   flightOptions.takeoffHeight = 6.0;
-  flight_ = std::make_unique<runtime::Flight>(flightOptions, fleetNames(fleet_), self_);
+  flight_ = std::make_unique<runtime::Flight>(flightOptions, fleetNames(unit_.fleet), unit_.self);
 
   // The same partition in every robot: UAVs in fleet order, explorers with less capacity.
   std::vector<double> capacities;
-  for (size_t i = 0; i < fleet_.size(); ++i) {
-    if (fleet_[i].role == agent::Role::GroundStation) continue;
-    if (i == self_) region_ = static_cast<uint32_t>(capacities.size());
-    capacities.push_back(fleet_[i].role == agent::Role::Explorer ? options_.explorerCapacity : 1.0);
+  for (size_t i = 0; i < unit_.fleet.size(); ++i) {
+    if (unit_.fleet[i].role == agent::Role::GroundStation) continue;
+    if (i == unit_.self) region_ = static_cast<uint32_t>(capacities.size());
+    capacities.push_back(unit_.fleet[i].role == agent::Role::Explorer ? options_.explorerCapacity
+                                                                      : 1.0);
   }
   work_ = sampleBoxFaces(*view.boxes, kFaceSpacing, groundZ, 1.0);
   workRegion_ = partitionWork(work_, capacities);
-  task_ =
-      role_ == agent::Role::Explorer && options_.exploreTime > 0.0 ? Task::Explore : Task::Inspect;
+  task_ = unit_.role == agent::Role::Explorer && options_.exploreTime > 0.0 ? Task::Explore
+                                                                            : Task::Inspect;
   if (task_ == Task::Explore) flight_->follow(explorationRoute(view), options_.transitSpeed);
 }
 
@@ -109,9 +104,9 @@ void CoinspectStrategy::initialise(const agent::AgentView& view) {
 // flown nearest first.
 std::vector<Vec3> CoinspectStrategy::explorationRoute(const agent::AgentView& view) const {
   size_t explorers = 0, rank = 0;
-  for (size_t i = 0; i < fleet_.size(); ++i)
-    if (fleet_[i].role == agent::Role::Explorer) {
-      if (i == self_) rank = explorers;
+  for (size_t i = 0; i < unit_.fleet.size(); ++i)
+    if (unit_.fleet[i].role == agent::Role::Explorer) {
+      if (i == unit_.self) rank = explorers;
       ++explorers;
     }
   std::vector<agent::BoxView> boxes = *view.boxes;
@@ -179,7 +174,7 @@ void CoinspectStrategy::planInspection(const agent::AgentView& view) {
 
   stops_.clear();
   planning::CoverageOptions coverage;
-  const double fullResolution = planning::fullResolutionDistance(optics_);
+  const double fullResolution = planning::fullResolutionDistance(unit_.optics);
   coverage.distance = options_.viewDistance * fullResolution;
   coverage.maxDistance = std::max(1.1, options_.viewDistance + 0.2) * fullResolution;
   coverage.clearance = flight_->requiredClearance(grid);
@@ -206,13 +201,14 @@ void CoinspectStrategy::planInspection(const agent::AgentView& view) {
     Stop stop;
     stop.target = v.target;
     stop.yaw = runtime::headingTowards(v.camera, v.target, view.odometry.yaw);
-    stop.body = v.camera - Eigen::AngleAxisd(stop.yaw, Vec3::UnitZ()) * camera_.positionInBody;
+    stop.body = v.camera - Eigen::AngleAxisd(stop.yaw, Vec3::UnitZ()) * unit_.camera.positionInBody;
     for (const uint32_t j : v.covered)
       stop.patches.push_back(patches[j].key);
     route.push_back(stop.body);
     stops_.push_back(std::move(stop));
   }
-  const double speed = planning::inspectionSpeed(optics_, coverage.distance, options_.transitSpeed);
+  const double speed =
+      planning::inspectionSpeed(unit_.optics, coverage.distance, options_.transitSpeed);
   flight_->follow(route, speed);
 }
 
@@ -233,7 +229,8 @@ agent::AgentCommand CoinspectStrategy::decide(const agent::AgentView& view) {
   if (!view.alive || !view.boxes) return {};
   auto messages = relay_.exchange(view);
   if (auto report = progress_.exchange(view)) messages.push_back(std::move(*report));
-  if (role_ == agent::Role::GroundStation) {  // a relay only: it sees every robot that delivers
+  if (unit_.role ==
+      agent::Role::GroundStation) {  // a relay only: it sees every robot that delivers
     relay_.takeNew(std::numeric_limits<size_t>::max());  // it keeps no map
     agent::AgentCommand out;
     out.messages = std::move(messages);
@@ -316,8 +313,8 @@ agent::AgentCommand CoinspectStrategy::command(const agent::AgentView& view,
     }
   }
   setpoint.yaw = runtime::headingTowards(odometry.position, target, odometry.yaw);
-  const Vec3 cameraPosition =
-      odometry.position + Eigen::AngleAxisd(odometry.yaw, Vec3::UnitZ()) * camera_.positionInBody;
+  const Vec3 cameraPosition = odometry.position + Eigen::AngleAxisd(odometry.yaw, Vec3::UnitZ()) *
+                                                      unit_.camera.positionInBody;
   const auto aim = planning::aimGimbal(cameraPosition, odometry.yaw, target);
   out.gimbal = agent::GimbalCommand::angles(
       std::clamp(aim.pitch, -view.gimbal.pitchMax, view.gimbal.pitchMax),

@@ -85,23 +85,16 @@ std::vector<uint64_t> decodeIds(const std::vector<uint8_t>& bytes) {
 }
 
 KiosStrategy::KiosStrategy(const agent::StrategyContext& context, const KiosOptions& options)
-    : options_(options),
-      role_(context.role),
-      self_(context.unitIndex),
-      fleet_(context.fleet),
-      camera_(context.camera),
-      radius_(context.collisionRadius) {
-  optics_ = runtime::cameraOptics(camera_);
-}
+    : options_(options), unit_(context) {}
 
 KiosStrategy::~KiosStrategy() = default;
 
 double KiosStrategy::viewingDistance() const {
-  return options_.viewDistance * planning::fullResolutionDistance(optics_);
+  return options_.viewDistance * planning::fullResolutionDistance(unit_.optics);
 }
 
 double KiosStrategy::inspectSpeed() const {
-  return std::min(options_.maxSpeed, planning::blurFreeSpeed(optics_, viewingDistance()));
+  return std::min(options_.maxSpeed, planning::blurFreeSpeed(unit_.optics, viewingDistance()));
 }
 
 void KiosStrategy::initialise(const agent::AgentView& view) {
@@ -121,18 +114,18 @@ void KiosStrategy::initialise(const agent::AgentView& view) {
   map_->refresh(view.time, true);
 
   runtime::FlightOptions flight;
-  flight.radius = radius_;
+  flight.radius = unit_.radius;
   flight.safetyMargin = options_.safetyMargin;
   flight.limits.speed = options_.maxSpeed;
   flight.takeoffHeight = kTakeoffHeight;
   std::vector<std::string> names;
-  for (const auto& member : fleet_)
+  for (const auto& member : unit_.fleet)
     names.push_back(member.name);
-  flight_ = std::make_unique<runtime::Flight>(flight, names, self_);
+  flight_ = std::make_unique<runtime::Flight>(flight, names, unit_.self);
 
   // The photographers of the plan: those seen now (all are in sight of each other on the
   // ground), in fleet order; the same list in every photographer.
-  for (const auto& member : fleet_) {
+  for (const auto& member : unit_.fleet) {
     if (member.role != agent::Role::Photographer) continue;
     if (member.name == view.name) {
       photographers_.push_back(member.name);
@@ -144,14 +137,14 @@ void KiosStrategy::initialise(const agent::AgentView& view) {
         lastSeen_[member.name] = neighbour.odometry.position;
       }
   }
-  if (role_ == agent::Role::Explorer) startSweep(view);
+  if (unit_.role == agent::Role::Explorer) startSweep(view);
 }
 
 void KiosStrategy::startSweep(const agent::AgentView& view) {
   size_t explorers = 0, rank = 0;
-  for (size_t i = 0; i < fleet_.size(); ++i)
-    if (fleet_[i].role == agent::Role::Explorer) {
-      if (i == self_) rank = explorers;
+  for (size_t i = 0; i < unit_.fleet.size(); ++i)
+    if (unit_.fleet[i].role == agent::Role::Explorer) {
+      if (i == unit_.self) rank = explorers;
       ++explorers;
     }
   const auto slabs = splitSlabs(volume_, explorers);
@@ -194,13 +187,13 @@ void KiosStrategy::plan(const agent::AgentView& view) {
   WaypointOptions waypointOptions;
   waypointOptions.spacing = options_.waypointSpacing;
   if (waypointOptions.spacing <= 0.0) {
-    const double vfov = camera_.verticalFov > 0.0 ? camera_.verticalFov : M_PI / 3.0;
+    const double vfov = unit_.camera.verticalFov > 0.0 ? unit_.camera.verticalFov : M_PI / 3.0;
     waypointOptions.spacing = 0.6 * 2.0 * viewingDistance() * std::tan(0.5 * vfov);
   }
   auto& viewpoint = waypointOptions.viewpoint;
-  viewpoint.optics = optics_;
+  viewpoint.optics = unit_.optics;
   viewpoint.distance = viewingDistance();
-  viewpoint.cameraOffset = camera_.positionInBody;
+  viewpoint.cameraOffset = unit_.camera.positionInBody;
   if (view.gimbal.pitchMax > 0.0) viewpoint.limits.pitchMax = view.gimbal.pitchMax;
   if (view.gimbal.yawMax > 0.0) viewpoint.limits.yawMax = view.gimbal.yawMax;
   viewpoint.minHeight = groundZ_ + kMinHeight;
@@ -306,7 +299,7 @@ void KiosStrategy::markReached(const Vec3& position, std::vector<uint64_t>* newl
 
 agent::AgentCommand KiosStrategy::decide(const agent::AgentView& view) {
   agent::AgentCommand command;
-  if (role_ == agent::Role::GroundStation || !view.alive || !view.boxes || view.boxes->empty())
+  if (unit_.role == agent::Role::GroundStation || !view.alive || !view.boxes || view.boxes->empty())
     return command;
   if (!initialised_) {
     // Links come up within the first 20 ms: wait for the neighbours before planning.
@@ -334,7 +327,7 @@ agent::AgentCommand KiosStrategy::decide(const agent::AgentView& view) {
   }
   std::vector<uint64_t> newlyVisited;
   if (!goingHome_ && !flight_->takingOff()) {
-    if (role_ == agent::Role::Explorer) {
+    if (unit_.role == agent::Role::Explorer) {
       if (flight_->done() || flight_->failed()) {
         if (sweepNext_ < sweep_.size())
           followSweep();
@@ -378,7 +371,7 @@ agent::AgentCommand KiosStrategy::decide(const agent::AgentView& view) {
   command.setpoint = flight_->step(view, *map_);
   if (!flight_->takingOff())
     command.setpoint->yaw = runtime::headingTowards(position, target, view.odometry.yaw);
-  command.gimbal = runtime::aimCamera(view.odometry, camera_, view.gimbal, target);
+  command.gimbal = runtime::aimCamera(view.odometry, unit_.camera, view.gimbal, target);
   if (options_.broadcastVisited && !newlyVisited.empty())
     command.messages.push_back({"", kVisitedTopic, encodeIds(newlyVisited)});
   return command;

@@ -48,14 +48,7 @@ bool nearNeighbour(const agent::AgentView& view, const Vec3& p, double radius) {
 }  // namespace
 
 StarStrategy::StarStrategy(const agent::StrategyContext& context, const StarOptions& options)
-    : options_(options),
-      role_(context.role),
-      self_(context.unitIndex),
-      fleet_(context.fleet),
-      camera_(context.camera),
-      radius_(context.collisionRadius) {
-  optics_ = runtime::cameraOptics(camera_);
-}
+    : options_(options), unit_(context) {}
 
 StarStrategy::~StarStrategy() = default;
 
@@ -68,32 +61,32 @@ void StarStrategy::initialise(const agent::AgentView& view) {
   mapOptions.regionMargin = 12.0;
   // Explorers map with every second own sweep as well: their frontiers and their own flight
   // need fresher data than the key frames (about one per 2 s) bring.
-  if (role_ == agent::Role::Explorer) mapOptions.ownSweepEvery = 2;
+  if (unit_.role == agent::Role::Explorer) mapOptions.ownSweepEvery = 2;
   map_ = std::make_unique<runtime::RobotMap>(mapOptions, *view.boxes, groundZ_);
   map_->openColumn(view.odometry.position, kTakeoffHeight + 2.0, 2.0);
   map_->refresh(view.time, true);
 
   runtime::FlightOptions flight;
-  flight.radius = radius_;
+  flight.radius = unit_.radius;
   flight.limits.speed = options_.maxSpeed;
   flight.takeoffHeight = kTakeoffHeight;
   // A smaller search budget than the runtime's: the Flight pays the full budget again for each
   // unreachable first stop of a route, which made single decisions take seconds on MBS.
   flight.maxExpansions = kSearchBudget;
   std::vector<std::string> names;
-  for (const auto& member : fleet_)
+  for (const auto& member : unit_.fleet)
     names.push_back(member.name);
-  flight_ = std::make_unique<runtime::Flight>(flight, names, self_);
+  flight_ = std::make_unique<runtime::Flight>(flight, names, unit_.self);
 
   // Units of the same role share the surface in fleet order: every unit computes the same split.
   size_t count = 0;
-  for (size_t i = 0; i < fleet_.size(); ++i) {
-    if (fleet_[i].role != role_) continue;
-    if (i == self_) part_ = static_cast<uint32_t>(count);
+  for (size_t i = 0; i < unit_.fleet.size(); ++i) {
+    if (unit_.fleet[i].role != unit_.role) continue;
+    if (i == unit_.self) part_ = static_cast<uint32_t>(count);
     ++count;
   }
   split_ = std::make_unique<SurfaceSplit>(*view.boxes, groundZ_, std::max<size_t>(1, count));
-  task_ = role_ == agent::Role::Explorer ? Task::Explore : Task::Inspect;
+  task_ = unit_.role == agent::Role::Explorer ? Task::Explore : Task::Inspect;
 }
 
 void StarStrategy::receive(const agent::AgentView& view) {
@@ -212,7 +205,7 @@ void StarStrategy::planInspection(const agent::AgentView& view) {
   // Photographers take their own share; once it is done (or not mapped yet) they help with the
   // rest. Explorers that finished mapping only help.
   std::vector<planning::InspectionPatch> patches;
-  if (role_ == agent::Role::Photographer)
+  if (unit_.role == agent::Role::Photographer)
     for (const auto& patch : open) {
       auto owner = owner_.find(patch.key);
       if (owner == owner_.end())
@@ -233,7 +226,7 @@ void StarStrategy::planInspection(const agent::AgentView& view) {
 
   stops_.clear();
   planning::CoverageOptions coverage;
-  const double fullResolution = planning::fullResolutionDistance(optics_);
+  const double fullResolution = planning::fullResolutionDistance(unit_.optics);
   coverage.distance = options_.viewDistance * fullResolution;
   coverage.maxDistance = 1.1 * fullResolution;
   coverage.clearance = flight_->requiredClearance(grid);
@@ -296,7 +289,7 @@ void StarStrategy::planInspection(const agent::AgentView& view) {
       Stop stop;
       stop.target = v.target;
       const double yaw = runtime::headingTowards(v.camera, v.target, view.odometry.yaw);
-      stop.body = v.camera - Eigen::AngleAxisd(yaw, Vec3::UnitZ()) * camera_.positionInBody;
+      stop.body = v.camera - Eigen::AngleAxisd(yaw, Vec3::UnitZ()) * unit_.camera.positionInBody;
       for (const uint32_t j : v.covered)
         stop.patches.push_back(patches[j].key);
       route.push_back(stop.body);
@@ -305,7 +298,8 @@ void StarStrategy::planInspection(const agent::AgentView& view) {
     }
     if (stops_.size() >= kStopsPerPlan) break;
   }
-  const double speed = planning::inspectionSpeed(optics_, coverage.distance, options_.maxSpeed);
+  const double speed =
+      planning::inspectionSpeed(unit_.optics, coverage.distance, options_.maxSpeed);
   flight_->follow(route, speed);
 }
 
@@ -340,7 +334,7 @@ void StarStrategy::inspect(const agent::AgentView& view) {
   if (idle || sincePlan >= options_.replanPeriod) planInspection(view);
   if (stops_.empty() && flight_->done()) {
     // Nothing mapped to inspect yet: wait off the own share, where key frames may arrive.
-    const double standoff = planning::fullResolutionDistance(optics_) + 3.0;
+    const double standoff = planning::fullResolutionDistance(unit_.optics) + 3.0;
     const auto staging = split_->standoffPoint(part_, here, standoff);
     if (staging && (*staging - here).norm() > 2.0) flight_->goTo(*staging, options_.maxSpeed);
   }
@@ -362,7 +356,7 @@ Vec3 StarStrategy::aimTarget(const agent::AgentView& view) const {
 
 agent::AgentCommand StarStrategy::decide(const agent::AgentView& view) {
   agent::AgentCommand out;
-  if (role_ == agent::Role::GroundStation || !view.alive || !view.boxes) return out;
+  if (unit_.role == agent::Role::GroundStation || !view.alive || !view.boxes) return out;
   if (!initialised_) initialise(view);
   map_->update(view);
   map_->refresh(view.time);
@@ -385,7 +379,7 @@ agent::AgentCommand StarStrategy::decide(const agent::AgentView& view) {
   const Vec3 target = aimTarget(view);
   if (!flight_->takingOff())
     out.setpoint->yaw = runtime::headingTowards(here, target, view.odometry.yaw);
-  out.gimbal = runtime::aimCamera(view.odometry, camera_, view.gimbal, target);
+  out.gimbal = runtime::aimCamera(view.odometry, unit_.camera, view.gimbal, target);
 
   // Share what is covered with whoever is in sight (all of it: a receiver may have missed
   // earlier broadcasts, and it relays the keys further).

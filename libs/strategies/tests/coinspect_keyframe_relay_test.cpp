@@ -71,7 +71,7 @@ TEST(KeyFrameRelay, MalformedMessagesAreRejected) {
 TEST(KeyFrameRelay, SendsWhatANeighbourLacksNewestFirstAndDropsUavPoints) {
   RelayOptions options;
   options.framesPerReply = 2;
-  KeyFrameRelay explorer(options, kFleet, 1), photographer(options, kFleet, 3);
+  KeyFrameRelay explorer(options, kFleet), photographer(options, kFleet);
 
   // The explorer scans three frames; the second holds a point on the photographer beside it.
   auto view = viewOf("jurong", 1.0, {0, 0, 10}, {});

@@ -42,6 +42,7 @@
 #include "coinspect/strategies/coinspect/work_partition.h"
 #include "coinspect/strategies/runtime/flight.h"
 #include "coinspect/strategies/runtime/robot_map.h"
+#include "coinspect/strategies/runtime/unit_info.h"
 
 namespace coinspect::strategies::coinspect_strategy {
 
@@ -81,12 +82,7 @@ class CoinspectStrategy : public agent::Strategy {
   agent::AgentCommand command(const agent::AgentView& view, agent::AgentSetpoint setpoint);
 
   CoinspectOptions options_;
-  agent::Role role_;
-  size_t self_;
-  std::vector<agent::FleetMember> fleet_;
-  agent::CameraInfo camera_;
-  double radius_;
-  planning::CameraOptics optics_;
+  runtime::UnitInfo unit_;
 
   bool initialised_ = false;
   std::unique_ptr<runtime::RobotMap> map_;

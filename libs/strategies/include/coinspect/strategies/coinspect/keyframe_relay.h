@@ -42,7 +42,8 @@ std::optional<IdRanges> decodeDigest(const std::vector<uint8_t>& bytes, size_t f
 
 class KeyFrameRelay {
  public:
-  KeyFrameRelay(const RelayOptions& options, std::vector<std::string> fleet, size_t self);
+  // `fleet`: every unit's name in fleet order (producers travel as fleet indices).
+  KeyFrameRelay(const RelayOptions& options, std::vector<std::string> fleet);
 
   // Takes the decision's new own and received key frames (filtering UAV points) and the relayed
   // frames and digests among its messages; returns the messages to send now.
@@ -60,7 +61,6 @@ class KeyFrameRelay {
 
   RelayOptions options_;
   std::vector<std::string> fleet_;
-  size_t self_;
   using Frames = std::map<std::pair<uint16_t, uint64_t>, agent::KeyFrameView>;
   Frames frames_;  // by (producer's fleet index, id)
   std::deque<agent::KeyFrameView> fresh_;

@@ -49,6 +49,7 @@
 #include "coinspect/strategies/kios/waypoints.h"
 #include "coinspect/strategies/runtime/flight.h"
 #include "coinspect/strategies/runtime/robot_map.h"
+#include "coinspect/strategies/runtime/unit_info.h"
 
 namespace coinspect::strategies::kios {
 
@@ -102,12 +103,7 @@ class KiosStrategy : public agent::Strategy {
   double inspectSpeed() const;
 
   KiosOptions options_;
-  agent::Role role_;
-  size_t self_;
-  std::vector<agent::FleetMember> fleet_;
-  agent::CameraInfo camera_;
-  double radius_;
-  planning::CameraOptics optics_;
+  runtime::UnitInfo unit_;
 
   bool initialised_ = false;
   std::unique_ptr<runtime::RobotMap> map_;

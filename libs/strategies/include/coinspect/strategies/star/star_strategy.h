@@ -23,6 +23,7 @@
 #include "coinspect/planning/camera_limits.h"
 #include "coinspect/strategies/runtime/flight.h"
 #include "coinspect/strategies/runtime/robot_map.h"
+#include "coinspect/strategies/runtime/unit_info.h"
 #include "coinspect/strategies/star/star_explore.h"
 #include "coinspect/strategies/star/star_inspect.h"
 #include "coinspect/strategies/star/star_options.h"
@@ -60,12 +61,7 @@ class StarStrategy : public agent::Strategy {
   Vec3 aimTarget(const agent::AgentView& view) const;
 
   StarOptions options_;
-  agent::Role role_;
-  size_t self_;
-  std::vector<agent::FleetMember> fleet_;
-  agent::CameraInfo camera_;
-  double radius_;
-  planning::CameraOptics optics_;
+  runtime::UnitInfo unit_;
 
   bool initialised_ = false;
   std::unique_ptr<runtime::RobotMap> map_;
