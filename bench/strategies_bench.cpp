@@ -1,4 +1,4 @@
-// Decision latency of every CARIC strategy: the CARIC MBS mission of config/caric-mbs-<name>.ini
+// Decision latency of every CARIC strategy: the CARIC MBS mission of its config/caric-mbs-*.ini
 // (5 UAVs, reference start positions, `caric` scoring and links) flown for `budget` s of mission
 // time, one run per strategy. Counters: the compute time of Strategy::decide per decision
 // (p50, p95, max, in ms, over every unit's decisions), decisions made, the real-time factor and
@@ -14,12 +14,19 @@
 
 namespace {
 
-constexpr const char* kStrategies[] = {"caric-baseline", "kios", "star", "coinspect"};
+struct Entry {
+  const char* strategy;
+  const char* config;  // in config/
+};
+constexpr Entry kStrategies[] = {{"caric-baseline", "caric-mbs-baseline.ini"},
+                                 {"kios", "caric-mbs-kios.ini"},
+                                 {"star", "caric-mbs-star.ini"},
+                                 {"coinspect", "caric-mbs-coinspect.ini"}};
 constexpr double kBudget = 300.0;  // s of mission time: past exploration into inspection
 
-void runStrategy(benchmark::State& state, const std::string& strategy) {
+void runStrategy(benchmark::State& state, const Entry& entry) {
   const std::filesystem::path ini =
-      std::filesystem::path(COINSPECT_SOURCE_DIR) / "config" / ("caric-mbs-" + strategy + ".ini");
+      std::filesystem::path(COINSPECT_SOURCE_DIR) / "config" / entry.config;
   if (!std::filesystem::exists(std::filesystem::path(COINSPECT_SHARED_DIR) / "data" / "caric-mbs" /
                                "mbs.stl")) {
     state.SkipWithError("CARIC MBS data not found beside the repository");
@@ -51,10 +58,9 @@ void runStrategy(benchmark::State& state, const std::string& strategy) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  for (const char* strategy : kStrategies)
-    benchmark::RegisterBenchmark(
-        (std::string("BM_DecisionLatency/") + strategy).c_str(),
-        [strategy](benchmark::State& state) { runStrategy(state, strategy); })
+  for (const Entry& entry : kStrategies)
+    benchmark::RegisterBenchmark((std::string("BM_DecisionLatency/") + entry.strategy).c_str(),
+                                 [&entry](benchmark::State& state) { runStrategy(state, entry); })
         ->Unit(benchmark::kSecond)
         ->Iterations(1);
   benchmark::Initialize(&argc, argv);

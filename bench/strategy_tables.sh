@@ -21,7 +21,9 @@ strategies=${5:-caric-baseline kios star coinspect}
 jobs=${6:-2}
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 coinspect="$build/bin/coinspect"
-mkdir -p "$out"
+# Configs and runs in separate folders: a folder named like a generated scenario beside a
+# config would be read as that scenario's files.
+mkdir -p "$out/configs" "$out/runs"
 
 budget_of() {
   case $1 in
@@ -42,7 +44,7 @@ source_of() {
 
 # One mission config per scenario (written into OUT_DIR; the strategy comes from --set).
 for scenario in $scenarios; do
-  cat >"$out/$scenario.ini" <<EOF
+  cat >"$out/configs/$scenario.ini" <<EOF
 [mission]
 scenario = $(source_of "$scenario")
 budget = $(budget_of "$scenario")
@@ -55,10 +57,10 @@ done
 
 run_one() {
   local scenario=$1 strategy=$2 seed=$3
-  local dir="$out/$scenario/$strategy/seed$seed"
+  local dir="$out/runs/$scenario/$strategy/seed$seed"
   [[ -f $dir/summary.txt ]] && return 0
   mkdir -p "$dir"
-  "$coinspect" run "$out/$scenario.ini" --set "strategy.name=$strategy" --seed "$seed" \
+  "$coinspect" run "$out/configs/$scenario.ini" --set "strategy.name=$strategy" --seed "$seed" \
     --out "$dir" --quiet >"$dir/stdout.txt" 2>"$dir/stderr.txt" ||
     echo "strategy_tables: $scenario $strategy seed $seed failed (see $dir/stderr.txt)" >&2
 }
@@ -80,7 +82,7 @@ echo "| scenario | strategy | runs | median Q | max Q | median detected | collis
 echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 for scenario in $scenarios; do
   for strategy in $strategies; do
-    summaries=$(ls "$out/$scenario/$strategy"/seed*/summary.txt 2>/dev/null || true)
+    summaries=$(ls "$out/runs/$scenario/$strategy"/seed*/summary.txt 2>/dev/null || true)
     [[ -n $summaries ]] || continue
     runs=$(echo "$summaries" | wc -l)
     field() { for f in $summaries; do awk "$1" "$f"; done; }
