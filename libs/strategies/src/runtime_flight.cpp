@@ -52,6 +52,9 @@ void Flight::goTo(const Vec3& goal, double speed) {
 }
 
 void Flight::follow(const std::vector<Vec3>& route, double speed) {
+  // Until the new route is planned the unit holds at the reference point it had reached, not at
+  // where it last stopped (which may be far behind: the controller would fly straight there).
+  if (phase_ == Phase::Flying) hoverPoint_ = profile_.setpoint().position;
   route_ = route;
   speed_ = speed;
   failures_ = 0;
@@ -192,6 +195,40 @@ agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const Robo
   return out;
 }
 
+agent::AgentSetpoint Flight::bounded(const Vec3& position, const RobotMap& map,
+                                     agent::AgentSetpoint setpoint) {
+  const Vec3 offset = setpoint.position - position;
+  if (offset.norm() <= options_.maxSetpointOffset) return setpoint;
+  ++guardedSetpoints_;
+  // The line only has to clear the vehicle's own sphere: the margins are for planned paths.
+  const auto& grid = map.grid();
+  auto options = searchOptions(grid);
+  options.clearance = options_.radius + 0.5 * grid.resolution() * std::sqrt(3.0);
+  const Vec3 target = position + offset.normalized() * options_.maxSetpointOffset;
+  setpoint.velocity = Vec3::Zero();
+  setpoint.acceleration = Vec3::Zero();
+  if (planning::segmentTraversable(grid, position, target, options)) {
+    setpoint.position = target;
+    return setpoint;
+  }
+  // Stay here; a flight plans again from here at once (its reference point cannot be reached,
+  // and it would otherwise wait for the vehicle forever).
+  setpoint.position = position;
+  hoverPoint_ = position;
+  if (phase_ == Phase::Flying) {
+    dropReachedWaypoints();
+    phase_ = route_.empty() ? Phase::Idle : Phase::Planning;
+    lastAttempt_ = kNever;
+  }
+  return setpoint;
+}
+
+void Flight::dropReachedWaypoints() {
+  const size_t reached = routeMark_[std::min(profile_.nextVertex() - 1, routeMark_.size() - 1)];
+  route_.erase(route_.begin(),
+               route_.begin() + static_cast<long>(std::min(reached, route_.size())));
+}
+
 agent::AgentSetpoint Flight::step(const agent::AgentView& view, const RobotMap& map) {
   const Vec3 position = view.odometry.position;
   const double dt = started_ ? std::max(0.0, view.time - lastTime_) : 0.0;
@@ -236,10 +273,7 @@ agent::AgentSetpoint Flight::step(const agent::AgentView& view, const RobotMap& 
         checkedGridVersion_ = map.gridVersion();
         if (!remainingPathClear(map)) {
           // Keep only the route waypoints not reached yet, and plan again from here.
-          const size_t reached =
-              routeMark_[std::min(profile_.nextVertex() - 1, routeMark_.size() - 1)];
-          route_.erase(route_.begin(),
-                       route_.begin() + static_cast<long>(std::min(reached, route_.size())));
+          dropReachedWaypoints();
           hoverPoint_ = profile_.setpoint().position;
           if (route_.empty() || !plan(position, view.odometry.velocity.norm(), map)) {
             phase_ = route_.empty() ? Phase::Idle : Phase::Planning;
@@ -259,14 +293,13 @@ agent::AgentSetpoint Flight::step(const agent::AgentView& view, const RobotMap& 
         hoverPoint_ = profile_.points().back();
         route_.clear();
       }
-      return setpoint;
+      return bounded(position, map, setpoint);
     }
     case Phase::Idle:
       setpoint.position = hoverPoint_;
       break;
   }
-  const auto out = deconflict(view, map, setpoint, &holding);
-  return out;
+  return bounded(position, map, deconflict(view, map, setpoint, &holding));
 }
 
 }  // namespace coinspect::strategies::runtime

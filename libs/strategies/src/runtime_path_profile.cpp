@@ -76,7 +76,8 @@ size_t PathProfile::nextVertex() const {
 
 void PathProfile::advance(const Vec3& vehicle, double dt) {
   if (finished_ || dt <= 0.0) return;
-  if ((vehicle - pointAt(s_)).norm() > limits_.maxLag) return;
+  waiting_ = (vehicle - pointAt(s_)).norm() > limits_.maxLag;
+  if (waiting_) return;
   // Midpoint rule over the step: the speed changes little within 0.1 s.
   const double v0 = std::max(speedAt(s_), 0.05);
   const double v1 = std::max(speedAt(std::min(length(), s_ + v0 * dt)), 0.05);
@@ -90,7 +91,7 @@ void PathProfile::advance(const Vec3& vehicle, double dt) {
 agent::AgentSetpoint PathProfile::setpoint() const {
   agent::AgentSetpoint out;
   out.position = pointAt(s_);
-  if (!finished_ && points_.size() >= 2) {
+  if (!finished_ && !waiting_ && points_.size() >= 2) {
     const size_t i = segmentAt(s_);
     const Vec3 direction = (points_[i + 1] - points_[i]).normalized();
     out.velocity = speedAt(s_) * direction;

@@ -80,7 +80,8 @@ struct PerfectVehicle {
   }
 };
 
-TEST(Flight, TakesOffThenGoesAroundAMappedWallKeepingItsClearance) {
+// A wall x = 0, |y| <= 8, 0 <= z <= 12 inside its box, mapped from both sides.
+RobotMap wallMap() {
   const std::vector<BoxView> boxes{makeBox({0, 0, 6}, {1, 16, 12})};
   auto options = mapOptions(UnknownSpace::BlockedNearBoxes);
   options.boxMargin = 0.5;
@@ -90,6 +91,11 @@ TEST(Flight, TakesOffThenGoesAroundAMappedWallKeepingItsClearance) {
   scan.receivedKeyFrames.push_back(wallFrame({6, 0, 6}));
   map.update(scan);
   map.refresh(0.0, true);
+  return map;
+}
+
+TEST(Flight, TakesOffThenGoesAroundAMappedWallKeepingItsClearance) {
+  const auto map = wallMap();
 
   FlightOptions flightOptions;
   flightOptions.radius = 0.3;
@@ -119,6 +125,69 @@ TEST(Flight, TakesOffThenGoesAroundAMappedWallKeepingItsClearance) {
   EXPECT_FALSE(flight.failed());
   EXPECT_NEAR((vehicle.view.odometry.position - Vec3(6, 0, 4)).norm(), 0.0, 0.6);
   EXPECT_GE(nearest, flightOptions.radius + flightOptions.safetyMargin);
+}
+
+// Flies from (-6, 0, 0.1) toward `goal` for `steps` decisions of 0.1 s after taking off.
+void takeOffAndFly(Flight* flight, PerfectVehicle* vehicle, const RobotMap& map, const Vec3& goal,
+                   int steps) {
+  vehicle->view.name = "me";
+  vehicle->view.odometry.position = Vec3(-6, 0, 0.1);
+  for (int i = 0; i < 200 && !flight->done(); ++i)
+    vehicle->apply(flight->step(vehicle->view, map), 0.1);
+  ASSERT_TRUE(flight->done());
+  flight->goTo(goal, 2.0);
+  for (int i = 0; i < steps; ++i)
+    vehicle->apply(flight->step(vehicle->view, map), 0.1);
+}
+
+TEST(Flight, HoldsWhereItIsWhenANewRouteCannotBePlannedInFlight) {
+  // A mission lost a unit this way: a new goal given in flight could not be planned, and the
+  // unit held at the point where it had last stopped, 50 m back, flying straight at it.
+  const auto map = wallMap();
+  Flight flight(FlightOptions{}, {"me"}, 0);
+  PerfectVehicle vehicle;
+  takeOffAndFly(&flight, &vehicle, map, Vec3(-6, -7, 10), 50);
+  const Vec3 there = vehicle.view.odometry.position;
+  ASSERT_GT((there - Vec3(-6, 0, 3.1)).norm(), 4.0);  // far from the take-off point
+  flight.follow({Vec3(500, 0, 5)}, 2.0);              // outside the map: cannot be planned
+  for (int i = 0; i < 30; ++i) {
+    const auto setpoint = flight.step(vehicle.view, map);
+    EXPECT_LT((setpoint.position - vehicle.view.odometry.position).norm(), 1.0) << i;
+    vehicle.apply(setpoint, 0.1);
+  }
+  EXPECT_LT((vehicle.view.odometry.position - there).norm(), 1.0);
+  EXPECT_EQ(flight.guardedSetpoints(), 0u);  // the hold point itself was right
+}
+
+TEST(Flight, NeverSendsASetpointFarFromTheVehicleOrAcrossAWall) {
+  const auto map = wallMap();
+  FlightOptions options;
+  Flight flight(options, {"me"}, 0);
+  PerfectVehicle vehicle;
+  takeOffAndFly(&flight, &vehicle, map, Vec3(-6, -7, 10), 30);
+  ASSERT_FALSE(flight.done());
+  const Vec3 carrot = flight.profile().setpoint().position;
+  // A gust puts the vehicle 6 m aside in open space: the carrot waits, the setpoint moves toward
+  // it by at most maxSetpointOffset, with no velocity feed-forward.
+  vehicle.view.odometry.position = carrot + Vec3(0, -6, 0);
+  auto setpoint = flight.step(vehicle.view, map);
+  EXPECT_NEAR((setpoint.position - vehicle.view.odometry.position).norm(),
+              options.maxSetpointOffset, 1e-9);
+  EXPECT_LT((setpoint.position - carrot).norm(), 6.0 - options.maxSetpointOffset + 1e-9);
+  EXPECT_EQ(setpoint.velocity, Vec3::Zero());
+  EXPECT_EQ(flight.guardedSetpoints(), 1u);
+  // Behind the wall (x > 0) the straight line to the carrot crosses it: hold where it is.
+  vehicle.view.odometry.position = Vec3(1.5, carrot.y(), carrot.z());
+  setpoint = flight.step(vehicle.view, map);
+  EXPECT_EQ(setpoint.position, vehicle.view.odometry.position);
+  EXPECT_EQ(flight.guardedSetpoints(), 2u);
+  // It does not wait there for a reference point it cannot reach: it plans again around the wall.
+  vehicle.apply(setpoint, 0.1);
+  for (int i = 0; i < 600 && !flight.done(); ++i)
+    vehicle.apply(flight.step(vehicle.view, map), 0.1);
+  EXPECT_TRUE(flight.done());
+  EXPECT_LT((vehicle.view.odometry.position - Vec3(-6, -7, 10)).norm(), 0.6);
+  EXPECT_EQ(flight.guardedSetpoints(), 2u);
 }
 
 TEST(Flight, LowerPriorityHoldsForAHigherPriorityNeighbourOnItsPath) {

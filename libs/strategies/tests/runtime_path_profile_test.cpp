@@ -45,6 +45,11 @@ TEST(PathProfile, WaitsForALaggingVehicle) {
   EXPECT_LE(profile.travelled(), 1.0 + 0.3);
   EXPECT_FALSE(profile.finished());
   EXPECT_EQ(profile.nextVertex(), 1u);
+  // While it waits it asks for no speed: a velocity feed-forward along the path would hold the
+  // vehicle off at a balance between it and the position error, and the carrot would wait forever.
+  EXPECT_EQ(profile.setpoint().velocity, Vec3::Zero());
+  profile.advance(profile.pointAt(profile.travelled()), 0.1);  // it caught up
+  EXPECT_GT(profile.setpoint().velocity.norm(), 0.0);
 }
 
 TEST(PathProfile, ASinglePointIsAHover) {

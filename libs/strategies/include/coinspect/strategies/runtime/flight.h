@@ -11,6 +11,12 @@
 // order: the lower index goes first): a unit holds while a higher-priority neighbour is within
 // `separation` of its next few metres of path, and every unit closer than `minSeparation` to a
 // neighbour backs away from it (the lower-priority one also climbs).
+//
+// The vehicle's tracking controller flies straight at its setpoint as fast as its limits allow,
+// so a setpoint far from the vehicle would be reached along a line nobody checked. Every setpoint
+// after take-off is therefore kept within `maxSetpointOffset` of the vehicle, and one whose
+// straight line from the vehicle is not clear becomes a hold where the vehicle is (a flight then
+// plans again from there).
 #pragma once
 
 #include <map>
@@ -29,15 +35,16 @@ struct FlightOptions {
   double safetyMargin = 0.8;  // m, kept between the robot's sphere and any mapped surface
   planning::UnknownPolicy unknown = planning::UnknownPolicy::Blocked;
   ProfileLimits limits;
-  double takeoffHeight = 3.0;     // m above the start, climbed vertically first
-  double retryPeriod = 1.0;       // s between planning attempts after a failure
-  int maxFailures = 3;            // consecutive failures before failed() says so
-  int snapRadius = 4;             // cells: blocked start/goal/waypoints move this far at most
-  double separation = 4.0;        // m, hold distance to higher-priority neighbours' positions
-  double minSeparation = 2.0;     // m, back away from any neighbour closer than this
-  double lookahead = 4.0;         // m of own path checked against neighbours
-  double recheckDistance = 20.0;  // m of remaining path checked again after each map rebuild
-  size_t maxExpansions = 200000;  // search budget to the first waypoint (a tenth per later leg)
+  double takeoffHeight = 3.0;      // m above the start, climbed vertically first
+  double retryPeriod = 1.0;        // s between planning attempts after a failure
+  int maxFailures = 3;             // consecutive failures before failed() says so
+  int snapRadius = 4;              // cells: blocked start/goal/waypoints move this far at most
+  double separation = 4.0;         // m, hold distance to higher-priority neighbours' positions
+  double minSeparation = 2.0;      // m, back away from any neighbour closer than this
+  double lookahead = 4.0;          // m of own path checked against neighbours
+  double recheckDistance = 20.0;   // m of remaining path checked again after each map rebuild
+  size_t maxExpansions = 200000;   // search budget to the first waypoint (a tenth per later leg)
+  double maxSetpointOffset = 2.5;  // m between the vehicle and any setpoint after take-off
 };
 
 class Flight {
@@ -62,6 +69,8 @@ class Flight {
   agent::AgentSetpoint step(const agent::AgentView& view, const RobotMap& map);
 
   const PathProfile& profile() const { return profile_; }
+  // Setpoints the offset guard had to shorten or turn into a hold (0 in a healthy flight).
+  size_t guardedSetpoints() const { return guardedSetpoints_; }
   // Unit direction of travel at the carrot (zero when hovering).
   Vec3 travelDirection() const;
 
@@ -70,9 +79,12 @@ class Flight {
   planning::PathSearchOptions searchOptions(const mapping::VoxelGrid& grid) const;
   bool plan(const Vec3& from, double speed, const RobotMap& map);
   bool remainingPathClear(const RobotMap& map) const;
+  void dropReachedWaypoints();  // the route keeps only waypoints the profile has not reached
   agent::AgentSetpoint deconflict(const agent::AgentView& view, const RobotMap& map,
                                   agent::AgentSetpoint setpoint, bool* holding);
   size_t priorityOf(const std::string& name) const;
+  agent::AgentSetpoint bounded(const Vec3& position, const RobotMap& map,
+                               agent::AgentSetpoint setpoint);
 
   FlightOptions options_;
   std::vector<std::string> fleet_;
@@ -91,6 +103,7 @@ class Flight {
   int failures_ = 0;
   double lastTime_ = 0.0;
   Vec3 takeoffTarget_ = Vec3::Zero();
+  size_t guardedSetpoints_ = 0;
 };
 
 }  // namespace coinspect::strategies::runtime

@@ -37,8 +37,8 @@ class PathProfile {
 
   // Moves the carrot `dt` s ahead unless `vehicle` lags more than maxLag behind it.
   void advance(const Vec3& vehicle, double dt);
-  // The setpoint at the carrot: position, velocity along the path (zero at the end), no
-  // acceleration feed-forward; yaw is left for the caller.
+  // The setpoint at the carrot: position, velocity along the path (zero at the end and while the
+  // carrot waits), no acceleration feed-forward; yaw is left for the caller.
   agent::AgentSetpoint setpoint() const;
   // Speed the profile allows at arc length s.
   double speedAt(double s) const;
@@ -53,6 +53,7 @@ class PathProfile {
   ProfileLimits limits_;
   double s_ = 0.0;
   bool finished_ = true;
+  bool waiting_ = false;  // the last advance() found the vehicle too far from the carrot
 };
 
 }  // namespace coinspect::strategies::runtime
