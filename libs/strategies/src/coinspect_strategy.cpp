@@ -64,7 +64,8 @@ CoinspectStrategy::CoinspectStrategy(const agent::StrategyContext& context,
     : options_(options),
       unit_(context),
       contact_(options.delivery),
-      relay_(RelayOptions{}, fleetNames(context.fleet)) {}
+      relay_(RelayOptions{}, fleetNames(context.fleet)),
+      tour_(kReached, kAttemptsPerPatch) {}
 
 CoinspectStrategy::~CoinspectStrategy() = default;
 
@@ -172,7 +173,7 @@ void CoinspectStrategy::planInspection(const agent::AgentView& view) {
       [&](uint64_t key) { return inspected_.count(key) != 0 || progress_.done(key); }, here,
       kPatchesPerPlan);
 
-  stops_.clear();
+  tour_.stops().clear();
   planning::CoverageOptions coverage;
   const double fullResolution = planning::fullResolutionDistance(unit_.optics);
   coverage.distance = options_.viewDistance * fullResolution;
@@ -198,31 +199,18 @@ void CoinspectStrategy::planInspection(const agent::AgentView& view) {
   std::vector<Vec3> route;
   for (size_t k = 1; k < tour.order.size(); ++k) {
     const auto& v = views[chosen[tour.order[k] - 1]];
-    Stop stop;
+    runtime::PatchStop stop;
     stop.target = v.target;
     stop.yaw = runtime::headingTowards(v.camera, v.target, view.odometry.yaw);
     stop.body = v.camera - Eigen::AngleAxisd(stop.yaw, Vec3::UnitZ()) * unit_.camera.positionInBody;
     for (const uint32_t j : v.covered)
       stop.patches.push_back(patches[j].key);
     route.push_back(stop.body);
-    stops_.push_back(std::move(stop));
+    tour_.stops().push_back(std::move(stop));
   }
   const double speed =
       planning::inspectionSpeed(unit_.optics, coverage.distance, options_.transitSpeed);
   flight_->follow(route, speed);
-}
-
-void CoinspectStrategy::advanceStops(const Vec3& position) {
-  for (size_t i = 0; i < std::min<size_t>(3, stops_.size()); ++i)
-    if ((position - stops_[i].body).norm() < kReached) {
-      for (size_t k = 0; k <= i; ++k)
-        for (const uint64_t key : stops_[k].patches) {
-          inspected_.insert(key);
-          progress_.markViewed(key);
-        }
-      stops_.erase(stops_.begin(), stops_.begin() + static_cast<long>(i) + 1);
-      return;
-    }
 }
 
 agent::AgentCommand CoinspectStrategy::decide(const agent::AgentView& view) {
@@ -264,20 +252,22 @@ agent::AgentCommand CoinspectStrategy::decide(const agent::AgentView& view) {
     lastPlan_ = kNever;
   }
   if (task_ == Task::Inspect && !flight_->takingOff()) {
-    advanceStops(here);
-    if ((flight_->done() || flight_->failed()) && !stops_.empty()) {
-      // The flight ended without reaching these stops (blocked or unreachable): their patches
-      // get another chance in a later plan, then are given up.
-      for (const auto& stop : stops_)
-        for (const uint64_t key : stop.patches)
-          if (++attempts_[key] >= kAttemptsPerPatch) inspected_.insert(key);
-      stops_.clear();
+    for (const auto& stop : tour_.takeReached(here))
+      for (const uint64_t key : stop.patches) {
+        inspected_.insert(key);
+        progress_.markViewed(key);
+      }
+    if ((flight_->done() || flight_->failed()) && !tour_.stops().empty()) {
+      // The flight ended short of these stops: their patches get another chance in a later plan.
+      for (const uint64_t key : tour_.abandon(runtime::patchKeys))
+        inspected_.insert(key);
       flight_->hover();
     }
     const bool stale = view.missionTime - lastPlan_ >= options_.replanPeriod;
-    const bool idle = (stops_.empty() || flight_->done()) && view.missionTime - lastPlan_ >= 2.0;
+    const bool idle =
+        (tour_.stops().empty() || flight_->done()) && view.missionTime - lastPlan_ >= 2.0;
     if (stale || idle) planInspection(view);
-    if (stops_.empty() && flight_->done()) {
+    if (tour_.stops().empty() && flight_->done()) {
       // Nothing mapped to inspect yet: wait by the own region, where key frames may arrive.
       double best = std::numeric_limits<double>::infinity();
       Vec3 staging = here;
@@ -301,8 +291,8 @@ agent::AgentCommand CoinspectStrategy::command(const agent::AgentView& view,
   const auto& odometry = view.odometry;
   // Look at the next viewpoint's patch when inspecting, else at the nearest box.
   Vec3 target;
-  if (task_ == Task::Inspect && !stops_.empty()) {
-    target = stops_.front().target;
+  if (task_ == Task::Inspect && !tour_.stops().empty()) {
+    target = tour_.stops().front().target;
   } else {
     double best = std::numeric_limits<double>::infinity();
     target = odometry.position + Vec3(std::cos(odometry.yaw), std::sin(odometry.yaw), 0.0);

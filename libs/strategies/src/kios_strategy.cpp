@@ -1,6 +1,7 @@
 #include "coinspect/strategies/kios/kios_strategy.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -85,7 +86,7 @@ std::vector<uint64_t> decodeIds(const std::vector<uint8_t>& bytes) {
 }
 
 KiosStrategy::KiosStrategy(const agent::StrategyContext& context, const KiosOptions& options)
-    : options_(options), unit_(context) {}
+    : options_(options), unit_(context), tour_(kReached, kAttempts) {}
 
 KiosStrategy::~KiosStrategy() = default;
 
@@ -175,7 +176,7 @@ void KiosStrategy::followSweep() {
 
 void KiosStrategy::plan(const agent::AgentView& view) {
   lastPlan_ = view.missionTime;
-  stops_.clear();
+  tour_.stops().clear();
   transit_ = false;
   const auto rank = std::find(photographers_.begin(), photographers_.end(), view.name);
   if (rank == photographers_.end()) return;
@@ -244,20 +245,20 @@ void KiosStrategy::plan(const agent::AgentView& view) {
     mine = std::move(ordered);
   }
   for (size_t k = 0; k < mine.size() && k < static_cast<size_t>(options_.stopsPerPlan); ++k)
-    stops_.push_back(waypoints[mine[k]]);
-  if (stops_.empty()) return;
+    tour_.stops().push_back(waypoints[mine[k]]);
+  if (tour_.stops().empty()) return;
   // A far first stop: the way there is transit, flown fast; the stops are flown at the speed
   // that keeps the images sharp.
-  transit_ = (stops_.front().body - view.odometry.position).norm() > kTransit;
+  transit_ = (tour_.stops().front().body - view.odometry.position).norm() > kTransit;
   if (transit_)
-    flight_->goTo(stops_.front().body, options_.maxSpeed);
+    flight_->goTo(tour_.stops().front().body, options_.maxSpeed);
   else
     followStops();
 }
 
 void KiosStrategy::followStops() {
   std::vector<Vec3> route;
-  for (const auto& stop : stops_)
+  for (const auto& stop : tour_.stops())
     route.push_back(stop.body);
   if (!route.empty()) flight_->follow(route, inspectSpeed());
 }
@@ -287,16 +288,6 @@ void KiosStrategy::stage(const agent::AgentView& view) {
   if ((goal - view.odometry.position).norm() > 3.0) flight_->goTo(goal, options_.maxSpeed);
 }
 
-void KiosStrategy::markReached(const Vec3& position, std::vector<uint64_t>* newlyVisited) {
-  for (size_t i = 0; i < std::min<size_t>(3, stops_.size()); ++i)
-    if ((position - stops_[i].body).norm() < kReached) {
-      for (size_t k = 0; k <= i; ++k)
-        if (visited_.insert(stops_[k].id).second) newlyVisited->push_back(stops_[k].id);
-      stops_.erase(stops_.begin(), stops_.begin() + static_cast<long>(i) + 1);
-      return;
-    }
-}
-
 agent::AgentCommand KiosStrategy::decide(const agent::AgentView& view) {
   agent::AgentCommand command;
   if (unit_.role == agent::Role::GroundStation || !view.alive || !view.boxes || view.boxes->empty())
@@ -320,7 +311,7 @@ agent::AgentCommand KiosStrategy::decide(const agent::AgentView& view) {
     const double reserve = (position - home_).norm() / options_.maxSpeed * 1.5 + kHomeReserve;
     if (view.timeLeft < reserve) {
       goingHome_ = true;
-      stops_.clear();
+      tour_.stops().clear();
       transit_ = false;
       flight_->goTo(home_, options_.maxSpeed);
     }
@@ -335,32 +326,35 @@ agent::AgentCommand KiosStrategy::decide(const agent::AgentView& view) {
           startSweep(view);
       }
     } else {
-      markReached(position, &newlyVisited);
+      for (const auto& stop : tour_.takeReached(position))
+        if (visited_.insert(stop.id).second) newlyVisited.push_back(stop.id);
       if (transit_ && !newlyVisited.empty()) {
         transit_ = false;
         followStops();
       }
-      if ((flight_->done() || flight_->failed()) && !stops_.empty()) {
+      if ((flight_->done() || flight_->failed()) && !tour_.stops().empty()) {
         // The flight ended short of these stops (blocked or unreachable): they get another
         // chance in a later plan, then are given up.
-        for (const auto& stop : stops_)
-          if (++attempts_[stop.id] >= kAttempts) visited_.insert(stop.id);
-        stops_.clear();
+        const auto id = [](const InspectionWaypoint& stop) {
+          return std::array<uint64_t, 1>{stop.id};
+        };
+        for (const uint64_t key : tour_.abandon(id))
+          visited_.insert(key);
         transit_ = false;
         flight_->hover();
       }
       const double sincePlan = view.missionTime - lastPlan_;
-      if (sincePlan >= options_.replanPeriod || (stops_.empty() && sincePlan >= kIdleReplan))
+      if (sincePlan >= options_.replanPeriod || (tour_.stops().empty() && sincePlan >= kIdleReplan))
         plan(view);
-      if (stops_.empty() && flight_->done()) stage(view);
+      if (tour_.stops().empty() && flight_->done()) stage(view);
     }
   }
 
   // Look at the next waypoint's surface point, else at the nearest box (captures on the way
   // count too).
   Vec3 target = position + Vec3(std::cos(view.odometry.yaw), std::sin(view.odometry.yaw), 0.0);
-  if (!stops_.empty()) {
-    target = stops_.front().target;
+  if (!tour_.stops().empty()) {
+    target = tour_.stops().front().target;
   } else {
     double best = std::numeric_limits<double>::infinity();
     for (const auto& box : *view.boxes) {

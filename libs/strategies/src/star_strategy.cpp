@@ -48,7 +48,7 @@ bool nearNeighbour(const agent::AgentView& view, const Vec3& p, double radius) {
 }  // namespace
 
 StarStrategy::StarStrategy(const agent::StrategyContext& context, const StarOptions& options)
-    : options_(options), unit_(context) {}
+    : options_(options), unit_(context), tour_(kReached, kAttemptsPerPatch) {}
 
 StarStrategy::~StarStrategy() = default;
 
@@ -224,7 +224,7 @@ void StarStrategy::planInspection(const agent::AgentView& view) {
     patches.resize(kPatchesPerPlan);
   }
 
-  stops_.clear();
+  tour_.stops().clear();
   planning::CoverageOptions coverage;
   const double fullResolution = planning::fullResolutionDistance(unit_.optics);
   coverage.distance = options_.viewDistance * fullResolution;
@@ -280,13 +280,13 @@ void StarStrategy::planInspection(const agent::AgentView& view) {
   Vec3 at = here;
   for (const size_t c : order) {
     std::vector<size_t> left = clusters[c];
-    while (!left.empty() && stops_.size() < kStopsPerPlan) {
+    while (!left.empty() && tour_.stops().size() < kStopsPerPlan) {
       size_t pick = 0;
       for (size_t k = 1; k < left.size(); ++k)
         if ((views[left[k]].camera - at).norm() < (views[left[pick]].camera - at).norm()) pick = k;
       const auto& v = views[left[pick]];
       left.erase(left.begin() + static_cast<long>(pick));
-      Stop stop;
+      runtime::PatchStop stop;
       stop.target = v.target;
       const double yaw = runtime::headingTowards(v.camera, v.target, view.odometry.yaw);
       stop.body = v.camera - Eigen::AngleAxisd(yaw, Vec3::UnitZ()) * unit_.camera.positionInBody;
@@ -294,45 +294,33 @@ void StarStrategy::planInspection(const agent::AgentView& view) {
         stop.patches.push_back(patches[j].key);
       route.push_back(stop.body);
       at = v.camera;
-      stops_.push_back(std::move(stop));
+      tour_.stops().push_back(std::move(stop));
     }
-    if (stops_.size() >= kStopsPerPlan) break;
+    if (tour_.stops().size() >= kStopsPerPlan) break;
   }
   const double speed =
       planning::inspectionSpeed(unit_.optics, coverage.distance, options_.maxSpeed);
   flight_->follow(route, speed);
 }
 
-void StarStrategy::advanceStops(const Vec3& position) {
-  for (size_t i = 0; i < std::min<size_t>(3, stops_.size()); ++i)
-    if ((position - stops_[i].body).norm() < kReached) {
-      for (size_t k = 0; k <= i; ++k)
-        for (const uint64_t key : stops_[k].patches)
-          if (inspected_.insert(key).second) inspectedChanged_ = true;
-      stops_.erase(stops_.begin(), stops_.begin() + static_cast<long>(i) + 1);
-      return;
-    }
-}
-
 void StarStrategy::inspect(const agent::AgentView& view) {
   const Vec3 here = view.odometry.position;
-  advanceStops(here);
-  if ((flight_->done() || flight_->failed()) && !stops_.empty()) {
-    // The flight ended without reaching these stops: their patches get another chance in a
-    // later plan, then are given up.
-    for (const auto& stop : stops_)
-      for (const uint64_t key : stop.patches)
-        if (++attempts_[key] >= kAttemptsPerPatch) inspected_.insert(key);
-    stops_.clear();
+  for (const auto& stop : tour_.takeReached(here))
+    for (const uint64_t key : stop.patches)
+      if (inspected_.insert(key).second) inspectedChanged_ = true;
+  if ((flight_->done() || flight_->failed()) && !tour_.stops().empty()) {
+    // The flight ended short of these stops: their patches get another chance in a later plan.
+    for (const uint64_t key : tour_.abandon(runtime::patchKeys))
+      inspected_.insert(key);
     flight_->hover();
   }
   const double sincePlan = view.missionTime - lastPlan_;
   // Receding horizon: plan again when the plan is flown, and every `replan_period` s (received
   // keys and newly mapped surface change the plan meanwhile; on MBS this scored 754 against 622
   // for planning again only when at most two stops were left).
-  const bool idle = (stops_.empty() || flight_->done()) && sincePlan >= 2.0;
+  const bool idle = (tour_.stops().empty() || flight_->done()) && sincePlan >= 2.0;
   if (idle || sincePlan >= options_.replanPeriod) planInspection(view);
-  if (stops_.empty() && flight_->done()) {
+  if (tour_.stops().empty() && flight_->done()) {
     // Nothing mapped to inspect yet: wait off the own share, where key frames may arrive.
     const double standoff = planning::fullResolutionDistance(unit_.optics) + 3.0;
     const auto staging = split_->standoffPoint(part_, here, standoff);
@@ -342,7 +330,7 @@ void StarStrategy::inspect(const agent::AgentView& view) {
 
 Vec3 StarStrategy::aimTarget(const agent::AgentView& view) const {
   const auto& odometry = view.odometry;
-  if (task_ == Task::Inspect && !stops_.empty()) return stops_.front().target;
+  if (task_ == Task::Inspect && !tour_.stops().empty()) return tour_.stops().front().target;
   if (task_ == Task::Explore && exploreAim_) return *exploreAim_;
   double best = std::numeric_limits<double>::infinity();
   Vec3 target = odometry.position + Vec3(std::cos(odometry.yaw), std::sin(odometry.yaw), 0.0);
@@ -367,7 +355,7 @@ agent::AgentCommand StarStrategy::decide(const agent::AgentView& view) {
     const double reserve = (here - home_).norm() / options_.maxSpeed * 1.5 + kHomeReserve;
     if (view.timeLeft < reserve) {
       task_ = Task::Home;
-      stops_.clear();
+      tour_.stops().clear();
       flight_->goTo(home_, options_.maxSpeed);
     }
   }

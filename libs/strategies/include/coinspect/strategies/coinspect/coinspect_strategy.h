@@ -41,6 +41,7 @@
 #include "coinspect/strategies/coinspect/shared_progress.h"
 #include "coinspect/strategies/coinspect/work_partition.h"
 #include "coinspect/strategies/runtime/flight.h"
+#include "coinspect/strategies/runtime/inspection_tour.h"
 #include "coinspect/strategies/runtime/robot_map.h"
 #include "coinspect/strategies/runtime/unit_info.h"
 
@@ -69,16 +70,9 @@ class CoinspectStrategy : public agent::Strategy {
 
  private:
   enum class Task { Explore, Inspect, Deliver };
-  struct Stop {  // one viewpoint of the current tour
-    Vec3 body, target;
-    double yaw = 0.0;
-    std::vector<uint64_t> patches;  // keys of the patches it covers
-  };
-
   void initialise(const agent::AgentView& view);
   std::vector<Vec3> explorationRoute(const agent::AgentView& view) const;
   void planInspection(const agent::AgentView& view);
-  void advanceStops(const Vec3& position);
   agent::AgentCommand command(const agent::AgentView& view, agent::AgentSetpoint setpoint);
 
   CoinspectOptions options_;
@@ -97,9 +91,8 @@ class CoinspectStrategy : public agent::Strategy {
   Task task_ = Task::Inspect;
   Task resume_ = Task::Inspect;  // what to go back to after a delivery
   double lastPlan_ = -1e300;
-  std::vector<Stop> stops_;
+  runtime::InspectionTour<runtime::PatchStop> tour_;  // the viewpoints being flown
   std::set<uint64_t> inspected_;        // patch keys viewed (or given up after kAttemptsPerPatch)
-  std::map<uint64_t, int> attempts_;    // plans that chose each patch
   std::map<uint64_t, uint32_t> owner_;  // region of each patch seen so far (stable)
 };
 

@@ -48,6 +48,7 @@
 #include "coinspect/planning/camera_limits.h"
 #include "coinspect/strategies/kios/waypoints.h"
 #include "coinspect/strategies/runtime/flight.h"
+#include "coinspect/strategies/runtime/inspection_tour.h"
 #include "coinspect/strategies/runtime/robot_map.h"
 #include "coinspect/strategies/runtime/unit_info.h"
 
@@ -97,7 +98,6 @@ class KiosStrategy : public agent::Strategy {
   void stage(const agent::AgentView& view);
   // Centre of photographer `rank`'s share of the volume: its part of the long axis, mid-height.
   Vec3 shareCentre(size_t rank) const;
-  void markReached(const Vec3& position, std::vector<uint64_t>* newlyVisited);
   void followStops();
   double viewingDistance() const;
   double inspectSpeed() const;
@@ -120,10 +120,9 @@ class KiosStrategy : public agent::Strategy {
   std::vector<std::string> photographers_;
   std::map<std::string, Vec3> lastSeen_;
   double lastPlan_ = -1e300;
-  std::vector<InspectionWaypoint> stops_;
+  runtime::InspectionTour<InspectionWaypoint> tour_;  // the own waypoints being flown
   bool transit_ = false;  // flying to the first stop at max_speed (no capture expected on the way)
   std::set<uint64_t> visited_;
-  std::map<uint64_t, int> attempts_;
 };
 
 void registerKios(agent::StrategyRegistry& registry);

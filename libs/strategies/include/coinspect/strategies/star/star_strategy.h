@@ -22,6 +22,7 @@
 #include "coinspect/agent/strategy.h"
 #include "coinspect/planning/camera_limits.h"
 #include "coinspect/strategies/runtime/flight.h"
+#include "coinspect/strategies/runtime/inspection_tour.h"
 #include "coinspect/strategies/runtime/robot_map.h"
 #include "coinspect/strategies/runtime/unit_info.h"
 #include "coinspect/strategies/star/star_explore.h"
@@ -44,11 +45,6 @@ class StarStrategy : public agent::Strategy {
 
  private:
   enum class Task { Explore, Inspect, Home };
-  struct Stop {  // one inspection viewpoint of the current plan
-    Vec3 body = Vec3::Zero(), target = Vec3::Zero();
-    std::vector<uint64_t> patches;  // keys of the patches it covers
-  };
-
   void initialise(const agent::AgentView& view);
   void receive(const agent::AgentView& view);
   void explore(const agent::AgentView& view);
@@ -57,7 +53,6 @@ class StarStrategy : public agent::Strategy {
   bool planExploration(const agent::AgentView& view, bool periodic);
   void inspect(const agent::AgentView& view);
   void planInspection(const agent::AgentView& view);
-  void advanceStops(const Vec3& position);
   Vec3 aimTarget(const agent::AgentView& view) const;
 
   StarOptions options_;
@@ -77,10 +72,9 @@ class StarStrategy : public agent::Strategy {
   std::optional<Vec3> exploreGoal_;
   std::vector<Vec3> unreachable_;  // exploration goals the flight gave up on
 
-  std::vector<Stop> stops_;
-  std::set<uint64_t> inspected_;        // own and received covered patches
-  std::map<uint64_t, int> attempts_;    // plans that chose each patch without reaching it
-  std::map<uint64_t, uint32_t> owner_;  // share of each patch seen so far (stable)
+  runtime::InspectionTour<runtime::PatchStop> tour_;  // the inspection viewpoints being flown
+  std::set<uint64_t> inspected_;                      // own and received covered patches
+  std::map<uint64_t, uint32_t> owner_;                // share of each patch seen so far (stable)
   bool inspectedChanged_ = false;
   double lastBroadcast_ = -1e300;
 };
