@@ -46,6 +46,9 @@ TEST(InspectionTour, KeysOfAbandonedStopsAreGivenUpAfterTheirAttempts) {
   EXPECT_TRUE(tour.stops().empty());
   tour.stops() = {stopAt(0, {2}), stopAt(10, {4})};
   EXPECT_EQ(tour.abandon(patchKeys), std::vector<uint64_t>{2});  // 2 failed twice, 4 once
+  // Keys no viewpoint was found for count the same attempts.
+  EXPECT_EQ(tour.fail({4, 5}), std::vector<uint64_t>{4});
+  EXPECT_EQ(tour.fail({5}), std::vector<uint64_t>{5});
   // A stop type of its own, one key per stop.
   struct Waypoint {
     Vec3 body;

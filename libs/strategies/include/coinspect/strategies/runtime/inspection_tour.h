@@ -3,7 +3,8 @@
 // - a stop is reached when the vehicle comes within `reachedDistance` of its body position; one of
 //   the next three counts, and the stops before it were passed on the way;
 // - a flight that ends short of its stops (blocked or unreachable) drops them, and their keys get
-//   another chance in a later plan until they have failed `attempts` times, then are given up.
+//   another chance in a later plan until they have failed `attempts` times, then are given up;
+//   keys a plan found no viewpoint for fail the same way.
 // `Stop` needs a `Vec3 body` member (PatchStop below, or a strategy's own).
 #pragma once
 
@@ -62,6 +63,14 @@ class InspectionTour {
       for (const uint64_t key : keysOf(stop))
         if (++failures_[key] >= attempts_) givenUp.push_back(key);
     stops_.clear();
+    return givenUp;
+  }
+
+  // A plan found no viewpoint for these keys: one failed attempt each, as above.
+  std::vector<uint64_t> fail(const std::vector<uint64_t>& keys) {
+    std::vector<uint64_t> givenUp;
+    for (const uint64_t key : keys)
+      if (++failures_[key] >= attempts_) givenUp.push_back(key);
     return givenUp;
   }
 
