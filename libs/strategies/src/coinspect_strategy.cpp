@@ -25,6 +25,7 @@ constexpr size_t kStopsPerPlan = 8;       // viewpoints flown per plan (each leg
 constexpr size_t kPatchesPerPlan = 120;   // nearest uninspected patches a plan covers
 constexpr int kAttemptsPerPatch = 2;      // plans that may pick a patch before it is given up
 constexpr size_t kFramesPerDecision = 4;  // key frames inserted per decision (~2 ms each at 1 m)
+constexpr double kRoofHeight = 3.0;       // m above a free roof where explorers orbit
 
 std::vector<std::string> fleetNames(const std::vector<agent::FleetMember>& fleet) {
   std::vector<std::string> names;
@@ -126,10 +127,18 @@ std::vector<Vec3> CoinspectStrategy::explorationRoute(const agent::AgentView& vi
         });
     const auto bounds = runtime::boxBounds(*nearest);
     const double bottom = std::max(bounds.min.z(), lowest), top = bounds.max.z();
-    const std::vector<double> layers =
+    std::vector<double> layers =
         top - bottom > 20.0
             ? std::vector<double>{bottom + 0.3 * (top - bottom), bottom + 0.75 * (top - bottom)}
             : std::vector<double>{0.5 * (bottom + std::max(bottom, top))};
+    // A roof nothing stands on is only seen from above (on MBS the sky deck's 355 roof points
+    // were never mapped from its mid-height orbit).
+    const bool covered = std::any_of(boxes.begin(), boxes.end(), [&](const auto& other) {
+      const auto b = runtime::boxBounds(other);
+      return b.min.z() >= top - 1.0 && b.min.x() < bounds.max.x() && b.max.x() > bounds.min.x() &&
+             b.min.y() < bounds.max.y() && b.max.y() > bounds.min.y();
+    });
+    if (!covered) layers.push_back(top + kRoofHeight);
     for (const double z : layers) {
       auto orbit = runtime::standoffOrbit(*nearest, z, options_.exploreStandoff, 6.0, from);
       orbit.push_back(orbit.front());
