@@ -114,9 +114,7 @@ bool StarStrategy::planExploration(const agent::AgentView& view, bool periodic) 
   for (const auto& cluster : clusters) {
     if (cluster.centroid.z() < groundZ_ + 1.5) continue;
     if (nearestBoxDistance(boxes, cluster.centroid) > options_.frontierMargin) continue;
-    const bool given_up = std::any_of(unreachable_.begin(), unreachable_.end(), [&](const Vec3& p) {
-      return (p - cluster.centroid).norm() < kUnreachableRadius;
-    });
+    const bool given_up = givenUp(cluster.centroid);
     if (given_up || nearNeighbour(view, cluster.centroid, kNeighbourKeepOut)) continue;
     const Candidate candidate{&cluster, (cluster.centroid - here).norm()};
     (split_->ownerOf(cluster.centroid) == part_ ? mine : others).push_back(candidate);
@@ -154,8 +152,11 @@ bool StarStrategy::planExploration(const agent::AgentView& view, bool periodic) 
     std::optional<Vec3> best;
     double bestDistance = std::numeric_limits<double>::infinity();
     for (uint32_t part = 0; part < split_->parts(); ++part) {
-      const auto p = split_->standoffPoint(part, here, kExploreStandoff);
-      if (!p || map_->map().state(*p) != mapping::CellState::Unknown) continue;
+      auto p = split_->standoffPoint(part, here, kExploreStandoff);
+      // Not below the flying floor, and not where the flight gave up already (an explorer
+      // asked for a point 1.2 m under the ground for the whole of one MBS run).
+      if (p) p->z() = std::max(p->z(), ring.minZ);
+      if (!p || map_->map().state(*p) != mapping::CellState::Unknown || givenUp(*p)) continue;
       const double d = (*p - here).norm() + (part == part_ ? 0.0 : 1000.0);
       if (d < bestDistance) bestDistance = d, best = p;
     }
@@ -170,6 +171,11 @@ bool StarStrategy::planExploration(const agent::AgentView& view, bool periodic) 
   exploreAim_ = aims[order.front()];
   flight_->goTo(*exploreGoal_, options_.maxSpeed);
   return true;
+}
+
+bool StarStrategy::givenUp(const Vec3& goal) const {
+  return std::any_of(unreachable_.begin(), unreachable_.end(),
+                     [&](const Vec3& p) { return (p - goal).norm() < kUnreachableRadius; });
 }
 
 void StarStrategy::explore(const agent::AgentView& view) {

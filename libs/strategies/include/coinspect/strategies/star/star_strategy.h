@@ -47,6 +47,7 @@ class StarStrategy : public agent::Strategy {
   enum class Task { Explore, Inspect, Home };
   void initialise(const agent::AgentView& view);
   void receive(const agent::AgentView& view);
+  bool givenUp(const Vec3& goal) const;  // near a goal the flight gave up on
   void explore(const agent::AgentView& view);
   // False when there is nothing left to explore. `periodic`: keep the current goal while its
   // frontier cluster is still there.
