@@ -189,17 +189,14 @@ void CoinspectStrategy::planInspection(const agent::AgentView& view) {
   coverage.maxDistance = std::max(1.1, options_.viewDistance + 0.2) * fullResolution;
   coverage.clearance = flight_->requiredClearance(grid);
   coverage.groundZ = map_->region().min.z();
-  const auto views = planning::coverPatches(patches, grid, coverage);
   // Patches without any safe viewpoint (under overhangs, in unmapped gaps) would stay the nearest
   // open ones and fill every plan: on MBS a photographer hovered for 240 s with 418 open patches
   // in its region and no viewpoint for the 120 nearest. They fail like unreached stops.
-  std::vector<bool> covered(patches.size(), false);
-  for (const auto& v : views)
-    for (const uint32_t j : v.covered)
-      covered[j] = true;
+  std::vector<uint32_t> uncoverable;
+  const auto views = planning::coverPatches(patches, grid, coverage, &uncoverable);
   std::vector<uint64_t> uncovered;
-  for (size_t j = 0; j < patches.size(); ++j)
-    if (!covered[j]) uncovered.push_back(patches[j].key);
+  for (const uint32_t j : uncoverable)
+    uncovered.push_back(patches[j].key);
   for (const uint64_t key : tour_.fail(uncovered))
     inspected_.insert(key);
   if (views.empty()) return;

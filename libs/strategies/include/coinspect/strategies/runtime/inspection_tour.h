@@ -58,12 +58,12 @@ class InspectionTour {
   // now failed `attempts` times, to be given up.
   template <typename KeysOf>
   std::vector<uint64_t> abandon(KeysOf keysOf) {
-    std::vector<uint64_t> givenUp;
+    std::vector<uint64_t> keys;
     for (const auto& stop : stops_)
       for (const uint64_t key : keysOf(stop))
-        if (++failures_[key] >= attempts_) givenUp.push_back(key);
+        keys.push_back(key);
     stops_.clear();
-    return givenUp;
+    return fail(keys);
   }
 
   // A plan found no viewpoint for these keys: one failed attempt each, as above.
