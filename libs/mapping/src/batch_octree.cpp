@@ -41,7 +41,7 @@ void sortUniqueCodes(std::vector<uint64_t>& codes, std::vector<uint64_t>& buffer
   codes.resize(out);
 }
 
-void BatchOcTree::applySorted(const std::vector<uint64_t>& codes) {
+void BatchOcTree::applySorted(const std::vector<uint64_t>& codes, bool missesClearOccupied) {
   if (codes.empty()) return;
   bool createdRoot = false;
   if (root == nullptr) {
@@ -49,15 +49,17 @@ void BatchOcTree::applySorted(const std::vector<uint64_t>& codes) {
     ++tree_size;
     createdRoot = true;
   }
-  descend(root, createdRoot, 0, codes.data(), codes.data() + codes.size());
+  descend(root, createdRoot, 0, codes.data(), codes.data() + codes.size(), missesClearOccupied);
 }
 
 void BatchOcTree::descend(octomap::OcTreeNode* node, bool justCreated, unsigned depth,
-                          const uint64_t* begin, const uint64_t* end) {
+                          const uint64_t* begin, const uint64_t* end, bool missesClearOccupied) {
   if (depth == tree_depth) {
     COINSPECT_ASSERT(end - begin == 1);  // the codes are unique per cell
     const bool wasOccupied = !justCreated && isNodeOccupied(node);
-    updateNodeLogOdds(node, (*begin & 1U) ? prob_hit_log : prob_miss_log);
+    const bool hit = (*begin & 1U) != 0;
+    if (!hit && wasOccupied && !missesClearOccupied) return;
+    updateNodeLogOdds(node, hit ? prob_hit_log : prob_miss_log);
     const bool isOccupied = isNodeOccupied(node);
     if (justCreated) ++known_;
     if (isOccupied != wasOccupied) {
@@ -83,7 +85,7 @@ void BatchOcTree::descend(octomap::OcTreeNode* node, bool justCreated, unsigned 
       createNodeChild(node, child);
       created = true;
     }
-    descend(getNodeChild(node, child), created, depth + 1, first, last);
+    descend(getNodeChild(node, child), created, depth + 1, first, last, missesClearOccupied);
     first = last;
   }
   node->updateOccupancyChildren();

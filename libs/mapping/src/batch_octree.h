@@ -46,8 +46,9 @@ class BatchOcTree : public octomap::OcTree {
  public:
   explicit BatchOcTree(double resolution) : octomap::OcTree(resolution) {}
 
-  // Applies one hit or miss to each cell of `codes` (sorted ascending, one code per cell).
-  void applySorted(const std::vector<uint64_t>& codes);
+  // Applies one hit or miss to each cell of `codes` (sorted ascending, one code per cell); with
+  // `missesClearOccupied` false, a miss leaves an occupied cell as it is.
+  void applySorted(const std::vector<uint64_t>& codes, bool missesClearOccupied);
 
   // Appends one update code per leaf (occupied or free as the leaf is), in ascending order: the
   // depth-first walk in child-index order is the Morton order.
@@ -58,7 +59,7 @@ class BatchOcTree : public octomap::OcTree {
 
  private:
   void descend(octomap::OcTreeNode* node, bool justCreated, unsigned depth, const uint64_t* begin,
-               const uint64_t* end);
+               const uint64_t* end, bool missesClearOccupied);
   void appendLeafCodes(const octomap::OcTreeNode* node, unsigned depth, uint64_t morton,
                        std::vector<uint64_t>& codes) const;
 

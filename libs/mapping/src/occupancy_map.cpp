@@ -97,7 +97,7 @@ void OccupancyMap::insertScan(const Vec3& origin, const std::vector<Eigen::Vecto
     }
     if (end & 1U) scratch_.push_back(end);
   }
-  applyScratch();
+  applyScratch(options_.raysClearOccupied);
 }
 
 void OccupancyMap::merge(const OccupancyMap& other) {
@@ -106,7 +106,7 @@ void OccupancyMap::merge(const OccupancyMap& other) {
   std::vector<uint64_t> codes;  // not scratch_: `other` may be this map
   codes.reserve(other.batch_->knownCells());
   other.batch_->appendLeafCodes(codes);  // already sorted, one per cell
-  batch_->applySorted(codes);
+  batch_->applySorted(codes, options_.raysClearOccupied);
 }
 
 void OccupancyMap::observeCells(const std::vector<Vec3>& freePoints,
@@ -118,12 +118,12 @@ void OccupancyMap::observeCells(const std::vector<Vec3>& freePoints,
     if (keyOf(*tree_, p, key)) scratch_.push_back(updateCode(key, false));
   for (const auto& p : occupiedPoints)
     if (keyOf(*tree_, p, key)) scratch_.push_back(updateCode(key, true));
-  applyScratch();
+  applyScratch(true);
 }
 
-void OccupancyMap::applyScratch() {
+void OccupancyMap::applyScratch(bool missesClearOccupied) {
   sortUniqueCodes(scratch_, sortBuffer_);
-  batch_->applySorted(scratch_);
+  batch_->applySorted(scratch_, missesClearOccupied);
 }
 
 CellState OccupancyMap::state(const Vec3& point) const {

@@ -103,6 +103,48 @@ TEST(OccupancyMap, EachCellIsUpdatedOncePerScanWhateverThePointOrder) {
     EXPECT_TRUE(logOdds == hit || logOdds == miss) << logOdds;
 }
 
+// A thin plate seen once, then passed at a grazing angle by rays hitting a wall behind it:
+// OctoMap's rule erases the plate, the static-world rule keeps it, and a robot's body (a free
+// observation through observeCells) still clears a cell under either rule.
+TEST(OccupancyMap, RaysLeaveOccupiedCellsWhenTheyMayNotClearThem) {
+  const Vec3 above(0.1, 0.2, 3.3);
+  Points plate;  // z = 0.3: the cells of 0 <= z < 0.5, x and y from 2 to 6
+  for (double x = 2.1; x < 6.0; x += 0.2)
+    for (double y = 2.1; y < 6.0; y += 0.2)
+      plate.emplace_back(static_cast<float>(x), static_cast<float>(y), 0.3f);
+  // Grazing rays from beside the plate, just above it (z 0.45 at the plate, inside its cells),
+  // ending on a wall at x = 12.25.
+  const Vec3 side(0.1, 4.0, 0.45);
+  const Points wall = wallAt(12.25, side, 0.05, 0.05);
+  for (const bool raysClear : {true, false}) {
+    OccupancyMap map({0.5, 30.0, raysClear});
+    map.insertScan(above, plate);
+    ASSERT_EQ(map.state(Vec3(4.25, 4.25, 0.25)), CellState::Occupied);
+    for (int i = 0; i < 12; ++i)
+      map.insertScan(side, wall);
+    EXPECT_EQ(map.state(Vec3(4.25, 4.25, 0.25)), raysClear ? CellState::Free : CellState::Occupied)
+        << raysClear;
+    EXPECT_EQ(map.state(Vec3(9.25, 4.25, 0.25)), CellState::Free);  // beyond the plate
+    EXPECT_EQ(map.state(Vec3(12.25, 4.25, 0.25)), CellState::Occupied);
+    for (int i = 0; i < 12; ++i)
+      map.observeCells({Vec3(4.25, 4.25, 0.25)}, {});
+    EXPECT_EQ(map.state(Vec3(4.25, 4.25, 0.25)), CellState::Free) << raysClear;
+  }
+}
+
+// Merging a map that saw a cell free does not clear it either under the static-world rule.
+TEST(OccupancyMap, MergeLeavesOccupiedCellsWhenRaysMayNotClearThem) {
+  const Vec3 origin(0.1, 0.2, 1.3);
+  OccupancyMap walls({0.5, 30.0, false}), open({0.5, 30.0, false});
+  walls.insertScan(origin, wallAt(6.25, origin, 1.0, 0.1));
+  open.insertScan(origin, wallAt(10.25, origin, 1.0, 0.1));  // sees x = 6.25 free
+  const size_t before = walls.occupiedCount();
+  for (int i = 0; i < 12; ++i)
+    walls.merge(open);
+  EXPECT_EQ(walls.state(Vec3(6.25, 0.2, 1.3)), CellState::Occupied);
+  EXPECT_EQ(walls.occupiedCount(), before + open.occupiedCount());
+}
+
 TEST(OccupancyMap, MergeOfTwoHalfMapsEqualsTheMapOfBothScans) {
   const Vec3 first(0.1, 0.2, 1.3), second(3.7, -2.4, 2.1);
   Points scan1 = wallAt(8.25, first, 3.0, 0.07), scan2 = wallAt(9.75, second, 3.0, 0.07);

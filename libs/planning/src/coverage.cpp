@@ -42,7 +42,8 @@ bool placeCamera(const mapping::VoxelGrid& grid, const InspectionPatch& patch,
   for (const Vec3& direction : {patch.normal, lifted})
     for (const double scale : {1.0, 0.85, 0.7, 1.15}) {
       const Vec3 candidate = patch.centre + scale * o.distance * direction;
-      if (safeCamera(grid, candidate, o) && freeLineOfSight(grid, candidate, faceOf(grid, patch))) {
+      if (safeCamera(grid, candidate, o) &&
+          lineOfSight(grid, candidate, faceOf(grid, patch), o.unknownHides)) {
         *camera = candidate;
         return true;
       }
@@ -57,7 +58,7 @@ bool covers(const mapping::VoxelGrid& grid, const Vec3& camera, const Vec3& axis
   if (distance > o.maxDistance || distance < 1e-6) return false;
   if (patch.normal.dot(toCamera) < std::cos(o.maxIncidence) * distance) return false;
   if (axis.dot(-toCamera) < std::cos(o.halfFov) * distance) return false;
-  return freeLineOfSight(grid, camera, faceOf(grid, patch));
+  return lineOfSight(grid, camera, faceOf(grid, patch), o.unknownHides);
 }
 
 }  // namespace
@@ -95,6 +96,10 @@ std::vector<InspectionPatch> groupSurface(const std::vector<mapping::SurfaceVoxe
 }
 
 bool freeLineOfSight(const mapping::VoxelGrid& grid, const Vec3& a, const Vec3& b) {
+  return lineOfSight(grid, a, b, true);
+}
+
+bool lineOfSight(const mapping::VoxelGrid& grid, const Vec3& a, const Vec3& b, bool unknownBlocks) {
   // Amanatides-Woo traversal; the cells holding `b` itself and the cell of `a` are not
   // required to be free (b is usually a surface point inside an occupied voxel).
   const double resolution = grid.resolution();
@@ -121,7 +126,9 @@ bool freeLineOfSight(const mapping::VoxelGrid& grid, const Vec3& a, const Vec3& 
     cell[axis] += stepDir[axis];
     tMax[axis] += tDelta[axis];
     if (cell == last) break;
-    if (grid.state(cell) != CellState::Free) return false;
+    const CellState state = grid.state(cell);
+    if (state == CellState::Occupied || (unknownBlocks && state == CellState::Unknown))
+      return false;
   }
   return true;
 }

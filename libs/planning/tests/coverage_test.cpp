@@ -55,6 +55,44 @@ TEST(Coverage, LineOfSightStopsAtOccupiedAndUnknownCells) {
   EXPECT_FALSE(freeLineOfSight(scene.grid, Vec3(2.5, 2.5, 2.5), Vec3(17.5, 20.5, 10.5)));
 }
 
+TEST(Coverage, UnknownCellsBlockTheLineOnlyWhenAsked) {
+  WallScene scene;
+  scene.grid.set(Index3(8, 11, 6), CellState::Unknown);  // on the line below
+  const Vec3 a(2.5, 2.5, 2.5), b(14.5, 20.5, 10.5);
+  EXPECT_FALSE(lineOfSight(scene.grid, a, b, true));
+  EXPECT_FALSE(freeLineOfSight(scene.grid, a, b));
+  EXPECT_TRUE(lineOfSight(scene.grid, a, b, false));
+  scene.grid.set(Index3(8, 11, 6), CellState::Occupied);
+  EXPECT_FALSE(lineOfSight(scene.grid, a, b, false));
+}
+
+// A band of unknown cells in front of the wall (never seen by a LiDAR ray) hides the wall unless
+// `unknownHides` is false; the cameras themselves stay on free cells with the clearance.
+TEST(Coverage, UnknownSpaceInFrontOfAWallHidesItOnlyWhenAsked) {
+  WallScene scene;
+  for (int z = 0; z < 20; ++z)
+    for (int y = 0; y < 30; ++y)
+      for (int x = 12; x < 15; ++x)
+        scene.grid.set(Index3(x, y, z), CellState::Unknown);
+  scene.grid.computeClearance(5.0, true);
+  const auto patches = groupSurface(scene.surface, 2.0);
+  CoverageOptions options;
+  options.distance = 7.0;
+  options.maxDistance = 8.5;
+  options.clearance = 1.5;
+  std::vector<uint32_t> uncoverable;
+  EXPECT_TRUE(coverPatches(patches, scene.grid, options, &uncoverable).empty());
+  EXPECT_EQ(uncoverable.size(), patches.size());
+  options.unknownHides = false;
+  const auto views = coverPatches(patches, scene.grid, options, &uncoverable);
+  EXPECT_TRUE(uncoverable.empty());
+  ASSERT_FALSE(views.empty());
+  for (const auto& view : views) {
+    EXPECT_EQ(scene.grid.state(scene.grid.cellOf(view.camera)), CellState::Free);
+    EXPECT_GE(scene.grid.clearance(scene.grid.cellOf(view.camera)), options.clearance);
+  }
+}
+
 TEST(Coverage, FewViewpointsCoverTheWholeWallFromTheFreeSide) {
   const WallScene scene;
   const auto patches = groupSurface(scene.surface, 2.0);

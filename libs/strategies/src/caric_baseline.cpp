@@ -133,8 +133,7 @@ void CaricBaseline::makePlan(const agent::AgentView& view) {
   if (boxes.empty()) return;  // nothing to inspect: hover after take-off
   map_ = std::make_unique<runtime::RobotMap>(mapOptions, boxes, groundZ);
   // Where the unit stands and climbs is free, even under a box.
-  map_->openColumn(view.odometry.position, options_.takeoffHeight + 2.0, 2.0);
-  map_->refresh(view.time, true);
+  flight_->openTakeoffColumn(*map_, view.odometry.position, view.time);
 
   const auto teams = baseline::formTeams(starts);
   const auto teamBoxes = baseline::assignBoxes(boxes, teams, starts);

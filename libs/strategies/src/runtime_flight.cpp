@@ -23,6 +23,12 @@ double Flight::requiredClearance(const mapping::VoxelGrid& grid) const {
   return options_.radius + options_.safetyMargin + grid.resolution() * std::sqrt(3.0);
 }
 
+void Flight::openTakeoffColumn(RobotMap& map, const Vec3& start, double time) const {
+  const double clearance = requiredClearance(map.grid());
+  map.openColumn(start, options_.takeoffHeight + clearance, clearance);
+  map.refresh(time, true);
+}
+
 planning::PathSearchOptions Flight::searchOptions(const mapping::VoxelGrid& grid) const {
   planning::PathSearchOptions out;
   out.clearance = requiredClearance(grid);

@@ -38,7 +38,8 @@ RobotMap::RobotMap(const RobotMapOptions& options, const std::vector<BoxView>& b
                    double groundZ)
     : options_(options),
       region_(missionRegion(boxes, options.regionMargin, groundZ)),
-      map_(mapping::OccupancyMapOptions{options.mapResolution, options.maxRange}) {
+      map_(mapping::OccupancyMapOptions{options.mapResolution, options.maxRange,
+                                        options.raysClearOccupied}) {
   COINSPECT_ASSERT(options.gridResolution > 0.0 && options.rebuildPeriod >= 0.0);
   const double res = options.gridResolution;
   const mapping::Index3 size =

@@ -63,8 +63,6 @@ void StarStrategy::initialise(const agent::AgentView& view) {
   // need fresher data than the key frames (about one per 2 s) bring.
   if (unit_.role == agent::Role::Explorer) mapOptions.ownSweepEvery = 2;
   map_ = std::make_unique<runtime::RobotMap>(mapOptions, *view.boxes, groundZ_);
-  map_->openColumn(view.odometry.position, kTakeoffHeight + 2.0, 2.0);
-  map_->refresh(view.time, true);
 
   runtime::FlightOptions flight;
   flight.radius = unit_.radius;
@@ -77,6 +75,7 @@ void StarStrategy::initialise(const agent::AgentView& view) {
   for (const auto& member : unit_.fleet)
     names.push_back(member.name);
   flight_ = std::make_unique<runtime::Flight>(flight, names, unit_.self);
+  flight_->openTakeoffColumn(*map_, view.odometry.position, view.time);
 
   // Units of the same role share the surface in fleet order: every unit computes the same split.
   size_t count = 0;

@@ -23,6 +23,11 @@ class BatchOcTree;  // src/batch_octree.h: the OcTree with the batched update
 struct OccupancyMapOptions {
   double resolution = 0.5;  // m, leaf size
   double maxRange = 30.0;   // m; returns farther away only clear free space up to this range
+  // false: a ray passing through a cell that is occupied leaves it occupied (insertScan, merge);
+  // only observeCells' free observations clear it. For static worlds: thin structure (a wing's
+  // trailing edge, a railing) is hit by few rays and passed by many at grazing angles, which
+  // otherwise erase it from the map although it is still there.
+  bool raysClearOccupied = true;
 };
 
 // A free cell of the map next to unknown space (what exploration is after).
@@ -57,7 +62,9 @@ class OccupancyMap {
   void merge(const OccupancyMap& other);
   // One free observation for the cell of each of `freePoints`, one occupied observation for the
   // cell of each of `occupiedPoints` (occupied wins for a cell in both), as one scan would give:
-  // for synthetic maps (tests, planners' fixtures).
+  // for synthetic maps (tests, planners' fixtures) and for cells known free for certain (a
+  // robot's body is there), which is why these free observations apply even when
+  // `raysClearOccupied` is false.
   void observeCells(const std::vector<Vec3>& freePoints, const std::vector<Vec3>& occupiedPoints);
 
   CellState state(const Vec3& point) const;
@@ -86,7 +93,7 @@ class OccupancyMap {
 
  private:
   // Sorts and deduplicates the update codes in scratch_ (occupied wins) and applies them.
-  void applyScratch();
+  void applyScratch(bool missesClearOccupied);
 
   OccupancyMapOptions options_;
   std::unique_ptr<octomap::OcTree> tree_;  // a BatchOcTree (src/batch_octree.h)

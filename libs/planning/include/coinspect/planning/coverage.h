@@ -37,6 +37,10 @@ struct CoverageOptions {
   double clearance = 1.5;      // m, required clearance of the camera position in the grid
   double minHeight = 1.5;      // m, camera height above `groundZ`
   double groundZ = 0.0;        // m
+  // false: only occupied cells hide a patch from a camera; unknown ones do not. The patch was
+  // mapped, so rays reached it through or beside that space, which is mostly empty; the camera
+  // position itself must still be free with the clearance above.
+  bool unknownHides = true;
 };
 
 struct CoverageView {
@@ -55,5 +59,7 @@ std::vector<CoverageView> coverPatches(const std::vector<InspectionPatch>& patch
 
 // True when the segment a-b crosses only Free cells of the grid (Unknown and Occupied block).
 bool freeLineOfSight(const mapping::VoxelGrid& grid, const Vec3& a, const Vec3& b);
+// The same with Unknown cells blocking only when `unknownBlocks`.
+bool lineOfSight(const mapping::VoxelGrid& grid, const Vec3& a, const Vec3& b, bool unknownBlocks);
 
 }  // namespace coinspect::planning

@@ -67,7 +67,10 @@ struct KiosOptions {
   int maxWaypoints = 150;
   double maxSpeed = 4.0;
   double safetyMargin = 0.8;
-  double mapResolution = 1.0;
+  // 0.5 m: at 1 m a wing's rear half shared its cells with the free space above it, rays over
+  // the wing marked them free and a photographer flew into the trailing edge (generated hangar,
+  // seed 2); 0.5 m also scored higher (CARIC MBS seed 1: 796 -> 967) at twice the compute.
+  double mapResolution = 0.5;
   uint64_t mtspSeed = 1;
   bool broadcastVisited = true;
   bool returnHome = true;

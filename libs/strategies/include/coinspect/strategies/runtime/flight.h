@@ -63,6 +63,11 @@ class Flight {
   bool done() const { return phase_ == Phase::Idle; }
   bool failed() const { return failures_ >= options_.maxFailures; }
   double requiredClearance(const mapping::VoxelGrid& grid) const;
+  // Opens the unknown space of the take-off column at `start` in `map` (where a unit stands and
+  // climbs is free), wide and tall enough that the top of the climb has the clearance the path
+  // search requires even when the unknown space around it stays blocked (near a box); rebuilds
+  // the grid.
+  void openTakeoffColumn(RobotMap& map, const Vec3& start, double time) const;
 
   // One decision: replans when needed, deconflicts, returns the setpoint (yaw: keeps the current
   // heading; callers overwrite it).

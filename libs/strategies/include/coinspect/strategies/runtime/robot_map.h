@@ -42,6 +42,10 @@ struct RobotMapOptions {
   // update() inserts the view's own and received key frames; false when the strategy hands
   // them over itself (insertFrame), e.g. after relaying them between robots.
   bool keyFramesFromView = true;
+  // false: LiDAR rays passing through an occupied cell leave it occupied (the scenes are
+  // static; see mapping::OccupancyMapOptions): a thin wing's trailing edge, seen at grazing
+  // angles, was erased and a photographer flew into it. Only a robot's body clears such a cell.
+  bool raysClearOccupied = false;
 };
 
 // The UAVs a robot knows to be near now: itself and its neighbours in line of sight.
