@@ -5,6 +5,8 @@
 # decision time.
 #
 # usage: bench/strategy_tables.sh BUILD_DIR OUT_DIR [SEEDS] [SCENARIOS] [STRATEGIES] [JOBS]
+#        bench/strategy_tables.sh --print OUT_DIR [SEEDS] [SCENARIOS] [STRATEGIES]
+#   --print     only the rows of the runs already in OUT_DIR: nothing is run or written
 #   SEEDS       "1 2 3 4 5"
 #   SCENARIOS   "caric-mbs mbs crane hangar" (caric-mbs reads ../shared/data/caric-mbs)
 #   STRATEGIES  "caric-baseline kios star coinspect"
@@ -13,6 +15,11 @@
 # the reference's LiDAR is noiseless. Runs already in OUT_DIR (summary.txt present) are kept.
 set -euo pipefail
 
+print_only=false
+if [[ ${1:-} == --print ]]; then
+  print_only=true
+  set -- - "${@:2}"
+fi
 build=${1:?usage: strategy_tables.sh BUILD_DIR OUT_DIR [SEEDS] [SCENARIOS] [STRATEGIES] [JOBS]}
 out=${2:?usage: strategy_tables.sh BUILD_DIR OUT_DIR [SEEDS] [SCENARIOS] [STRATEGIES] [JOBS]}
 seeds=${3:-1 2 3 4 5}
@@ -23,7 +30,7 @@ repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 coinspect="$build/bin/coinspect"
 # Configs and runs in separate folders: a folder named like a generated scenario beside a
 # config would be read as that scenario's files.
-mkdir -p "$out/configs" "$out/runs"
+$print_only || mkdir -p "$out/configs" "$out/runs"
 
 budget_of() {
   case $1 in
@@ -43,7 +50,8 @@ source_of() {
 }
 
 # One mission config per scenario (written into OUT_DIR; the strategy comes from --set).
-for scenario in $scenarios; do
+$print_only && scenarios_to_run="" || scenarios_to_run=$scenarios
+for scenario in $scenarios_to_run; do
   cat >"$out/configs/$scenario.ini" <<EOF
 [mission]
 scenario = $(source_of "$scenario")
@@ -65,7 +73,7 @@ run_one() {
     echo "strategy_tables: $scenario $strategy seed $seed failed (see $dir/stderr.txt)" >&2
 }
 
-for scenario in $scenarios; do
+for scenario in $scenarios_to_run; do
   for strategy in $strategies; do
     for seed in $seeds; do
       while (($(jobs -rp | wc -l) >= jobs)); do wait -n || true; done
