@@ -208,6 +208,7 @@ agent::AgentCommand CaricBaseline::decide(const agent::AgentView& view) {
   }
   if (!goingHome_ && map_) {
     if (layerStarted_ && !flight_->takingOff() && (flight_->done() || flight_->failed())) {
+      if (flight_->failed()) baseline::requeueFailedLayer(layers_, layer_);
       ++layer_;
       layerStarted_ = false;
     }

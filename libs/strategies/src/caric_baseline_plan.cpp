@@ -6,6 +6,8 @@
 #include <numeric>
 #include <tuple>
 
+#include "coinspect/core/error.h"
+
 namespace coinspect::strategies::baseline {
 
 using runtime::footprintOf;
@@ -192,6 +194,14 @@ std::vector<std::vector<Layer>> divideLayers(const std::vector<Layer>& layers, s
     before += layer.length;
   }
   return out;
+}
+
+void requeueFailedLayer(std::vector<Layer>& layers, size_t index) {
+  COINSPECT_ASSERT(index < layers.size());
+  if (layers[index].retry) return;
+  Layer again = layers[index];
+  again.retry = true;
+  layers.push_back(again);
 }
 
 }  // namespace coinspect::strategies::baseline

@@ -85,6 +85,20 @@ TEST(CaricBaselinePlan, LayersSnakeAndDivideIntoBalancedRuns) {
   EXPECT_NEAR(parts[0].front().z, 3.0, 1e-12);  // consecutive runs, in order
 }
 
+TEST(CaricBaselinePlan, AFailedLayerIsTriedOnceMoreAfterTheOthers) {
+  const std::vector<BoxView> boxes{makeBox({0, 0, 10}, {10, 10, 20})};
+  auto layers = baseline::layersOf(boxes, 10.0, 3.0, 7.0);
+  ASSERT_EQ(layers.size(), 2u);
+  const double firstZ = layers[0].z;
+  baseline::requeueFailedLayer(layers, 0);
+  ASSERT_EQ(layers.size(), 3u);
+  EXPECT_EQ(layers[2].z, firstZ);
+  EXPECT_TRUE(layers[2].retry);
+  EXPECT_FALSE(layers[0].retry);
+  baseline::requeueFailedLayer(layers, 2);  // its second try failed too: dropped
+  EXPECT_EQ(layers.size(), 3u);
+}
+
 TEST(CaricBaselineOptions, ReadsKeysStrictly) {
   const auto config = Config::fromText(
       "[caric-baseline]\nmax_speed = 1.5\nunknown_space = blocked\nreturn_home = false\n",

@@ -54,7 +54,15 @@ struct Layer {
   BoxView box;
   double z = 0.0;
   double length = 0.0;  // m, orbit length at the planned distance
+  bool retry = false;   // a second try, queued after its first flight failed
 };
+
+// The flight to `layers[index]` failed: unless that was already its second try, the layer is
+// queued again at the end. A unit on the ground near a tower cannot plan out of its take-off
+// column until the LiDAR has mapped the space around it (unknown space near a box is blocked),
+// so the first layers' flights fail within seconds; dropping them for good lost an explorer's
+// whole share (CARIC MBS seed 1: raffles hovered from 210 s to the end).
+void requeueFailedLayer(std::vector<Layer>& layers, size_t index);
 
 // The layers of every box in order, no taller than `layerHeight`, at least `minZ` high;
 // alternately bottom-up and top-down from box to box (a snake: the next box starts near where
