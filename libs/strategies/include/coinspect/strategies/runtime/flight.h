@@ -64,9 +64,9 @@ class Flight {
   bool failed() const { return failures_ >= options_.maxFailures; }
   double requiredClearance(const mapping::VoxelGrid& grid) const;
   // Opens the unknown space of the take-off column at `start` in `map` (where a unit stands and
-  // climbs is free), wide and tall enough that the top of the climb has the clearance the path
-  // search requires even when the unknown space around it stays blocked (near a box); rebuilds
-  // the grid.
+  // climbs is free): radius, and height above the climb, = the clearance the path search
+  // requires. Rebuilds the grid. The space around the column may stay unknown (blocked near a
+  // box) until mapped: plans out of it can fail meanwhile.
   void openTakeoffColumn(RobotMap& map, const Vec3& start, double time) const;
 
   // One decision: replans when needed, deconflicts, returns the setpoint (yaw: keeps the current
