@@ -63,6 +63,10 @@ bool covers(const mapping::VoxelGrid& grid, const Vec3& camera, const Vec3& axis
 
 }  // namespace
 
+bool isGroundSurface(const mapping::SurfaceVoxel& voxel, double groundZ, double resolution) {
+  return voxel.normal.z() > 0.8 && voxel.centre.z() <= groundZ + 1.25 * resolution;
+}
+
 std::vector<InspectionPatch> groupSurface(const std::vector<mapping::SurfaceVoxel>& voxels,
                                           double patchSize) {
   struct Sum {

@@ -83,7 +83,12 @@ bool cellTraversable(const VoxelGrid& grid, const Index3& cell, const PathSearch
   const CellState state = grid.state(cell);
   if (state == CellState::Occupied) return false;
   if (state == CellState::Unknown && options.unknown == UnknownPolicy::Blocked) return false;
-  return options.clearance <= 0.0 || grid.clearance(cell) >= options.clearance;
+  if (options.clearance > 0.0 && grid.clearance(cell) < options.clearance) return false;
+  if (options.avoid.empty()) return true;
+  const Vec3 centre = grid.centre(cell);
+  for (const auto& sphere : options.avoid)
+    if ((centre - sphere.centre).squaredNorm() < sphere.radius * sphere.radius) return false;
+  return true;
 }
 
 double cellCostMultiplier(const VoxelGrid& grid, const Index3& cell,

@@ -45,6 +45,17 @@ TEST(Coverage, GroupSurfaceBinsByPositionAndNormal) {
   EXPECT_EQ(groupSurface(voxels, 2.0)[1].key, patches[1].key);
 }
 
+TEST(Coverage, GroundSurfaceIsTheUpwardLayerJustAboveTheGround) {
+  const double ground = 2.0, resolution = 0.5;
+  EXPECT_TRUE(isGroundSurface({Vec3(0, 0, 2.25), Vec3::UnitZ()}, ground, resolution));
+  EXPECT_TRUE(
+      isGroundSurface({Vec3(0, 0, 2.6), Vec3(0.3, 0, 0.95).normalized()}, ground, resolution));
+  // A wall's foot faces sideways; a roof faces up but is higher; the underside faces down.
+  EXPECT_FALSE(isGroundSurface({Vec3(0, 0, 2.25), Vec3::UnitX()}, ground, resolution));
+  EXPECT_FALSE(isGroundSurface({Vec3(0, 0, 2.75), Vec3::UnitZ()}, ground, resolution));
+  EXPECT_FALSE(isGroundSurface({Vec3(0, 0, 2.25), -Vec3::UnitZ()}, ground, resolution));
+}
+
 TEST(Coverage, LineOfSightStopsAtOccupiedAndUnknownCells) {
   const WallScene scene;
   EXPECT_TRUE(freeLineOfSight(scene.grid, Vec3(2.5, 2.5, 2.5), Vec3(14.5, 20.5, 10.5)));

@@ -20,7 +20,10 @@ bool oracleTraversable(const VoxelGrid& grid, const Index3& c, const PathSearchO
   if (!grid.contains(c)) return false;
   if (grid.state(c) == CellState::Occupied) return false;
   if (grid.state(c) == CellState::Unknown && o.unknown == UnknownPolicy::Blocked) return false;
-  return grid.clearance(c) >= o.clearance;
+  if (grid.clearance(c) < o.clearance) return false;
+  for (const auto& sphere : o.avoid)
+    if ((grid.centre(c) - sphere.centre).norm() < sphere.radius) return false;
+  return true;
 }
 
 double oracleMultiplier(const VoxelGrid& grid, const Index3& c, const PathSearchOptions& o) {
@@ -219,6 +222,31 @@ TEST(PathSearch, RequiredClearanceKeepsThePathAwayFromObstacles) {
     EXPECT_GT(result.cost, 17.5 + 0.1);
     checkPolyline(grid, result.points, o);
   }
+}
+
+TEST(PathSearch, AvoidSpheresKeepThePathOutOfSpaceTheMapDoesNotHold) {
+  // Open space; a robot holds on the straight line (x = 10): the path goes around it, and every
+  // point of it stays outside the sphere less the half cell diagonal (a point may lie anywhere
+  // in a cell whose centre is outside).
+  VoxelGrid grid(Vec3::Zero(), 0.5, Index3(40, 20, 8), CellState::Free);
+  grid.computeClearance(10.0, false);
+  const Vec3 start(1.25, 5.25, 2.25), goal(18.75, 5.25, 2.25);
+  PathSearchOptions o;
+  o.avoid.push_back({Vec3(10.0, 5.25, 2.25), 2.5});
+  EXPECT_FALSE(segmentTraversable(grid, start, goal, o));
+  for (const auto& result :
+       {findPathAStar(grid, start, goal, o), findPathThetaStar(grid, start, goal, o)}) {
+    ASSERT_EQ(result.status, PathStatus::Found);
+    EXPECT_GT(result.cost, 17.5 + 0.5);
+    checkPolyline(grid, result.points, o);
+    for (size_t i = 1; i < result.points.size(); ++i)
+      for (double f = 0.0; f <= 1.0; f += 0.01) {
+        const Vec3 p = result.points[i - 1] + f * (result.points[i] - result.points[i - 1]);
+        EXPECT_GE((p - o.avoid[0].centre).norm(), 2.5 - 0.5 * 0.5 * std::sqrt(3.0) - 1e-9);
+      }
+  }
+  o.avoid.clear();
+  EXPECT_TRUE(segmentTraversable(grid, start, goal, o));
 }
 
 TEST(PathSearch, StatusesForBlockedEndpointsAndBudget) {

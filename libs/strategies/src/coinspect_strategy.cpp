@@ -155,12 +155,15 @@ void CoinspectStrategy::planInspection(const agent::AgentView& view) {
   const auto& grid = map_->grid();
   const auto& region = map_->region();
   std::vector<mapping::SurfaceVoxel> surface;
-  for (const auto& voxel : map_->map().surfaceVoxels(region.min, region.max))
+  const double cell = map_->map().options().resolution;
+  for (const auto& voxel : map_->map().surfaceVoxels(region.min, region.max)) {
+    if (planning::isGroundSurface(voxel, region.min.z(), cell)) continue;
     for (const auto& box : *view.boxes)
       if (runtime::distanceToBox(box, voxel.centre) <= 1.0) {
         surface.push_back(voxel);
         break;
       }
+  }
   const auto grouped = planning::groupSurface(surface, kPatchSize);
   std::vector<uint32_t> owners;
   for (const auto& patch : grouped) {

@@ -189,6 +189,7 @@ void KiosStrategy::plan(const agent::AgentView& view) {
   path.unknown = planning::UnknownPolicy::Blocked;
   WaypointOptions waypointOptions;
   waypointOptions.spacing = options_.waypointSpacing;
+  waypointOptions.groundZ = groundZ_;
   if (waypointOptions.spacing <= 0.0) {
     const double vfov = unit_.camera.verticalFov > 0.0 ? unit_.camera.verticalFov : M_PI / 3.0;
     waypointOptions.spacing = 0.6 * 2.0 * viewingDistance() * std::tan(0.5 * vfov);

@@ -13,7 +13,8 @@ using mapping::CellState;
 using mapping::Index3;
 
 std::vector<mapping::SurfaceVoxel> viewCells(const mapping::VoxelGrid& grid,
-                                             const std::vector<BoxView>& boxes, double boxMargin) {
+                                             const std::vector<BoxView>& boxes, double boxMargin,
+                                             double groundZ) {
   static const Index3 kFaces[6] = {{-1, 0, 0}, {1, 0, 0},  {0, -1, 0},
                                    {0, 1, 0},  {0, 0, -1}, {0, 0, 1}};
   // Boxes' bounds grown by the margin: a cheap test before the exact distance.
@@ -38,6 +39,7 @@ std::vector<mapping::SurfaceVoxel> viewCells(const mapping::VoxelGrid& grid,
         if (view.squaredNorm() < 1e-9) continue;
         view.normalize();
         const Vec3 surface = grid.centre(cell) + 0.5 * grid.resolution() * view;
+        if (planning::isGroundSurface({surface, -view}, groundZ, grid.resolution())) continue;
         bool nearBox = false;
         for (size_t b = 0; b < boxes.size() && !nearBox; ++b)
           nearBox =
@@ -54,8 +56,8 @@ std::vector<InspectionWaypoint> inspectionWaypoints(
   viewpoint.grid = &grid;
   viewpoint.pathOptions = pathOptions;
   std::vector<InspectionWaypoint> out;
-  const auto patches =
-      planning::groupSurface(viewCells(grid, boxes, options.boxMargin), options.spacing);
+  const auto patches = planning::groupSurface(
+      viewCells(grid, boxes, options.boxMargin, options.groundZ), options.spacing);
   for (const auto& patch : patches) {
     const auto view = planning::makeViewpoint({patch.centre, patch.normal}, viewpoint);
     if (!view.free) continue;

@@ -15,7 +15,7 @@ constexpr double kNever = -std::numeric_limits<double>::infinity();
 }  // namespace
 
 Flight::Flight(const FlightOptions& options, std::vector<std::string> fleet, size_t self)
-    : options_(options), fleet_(std::move(fleet)), self_(self) {}
+    : options_(options), fleet_(std::move(fleet)), self_(self), yieldingSince_(kNever) {}
 
 double Flight::requiredClearance(const mapping::VoxelGrid& grid) const {
   // A path point may lie anywhere in its cell and the surface anywhere in the blocking cell:
@@ -81,9 +81,11 @@ Vec3 Flight::travelDirection() const {
   return v.norm() > 1e-6 ? Vec3(v.normalized()) : Vec3::Zero();
 }
 
-bool Flight::plan(const Vec3& from, double speed, const RobotMap& map) {
+bool Flight::plan(const Vec3& from, double speed, const RobotMap& map,
+                  const std::vector<planning::AvoidSphere>& avoid) {
   const auto& grid = map.grid();
-  const auto options = searchOptions(grid);
+  auto options = searchOptions(grid);
+  options.avoid = avoid;
   std::vector<Vec3> points{from};
   std::vector<size_t> marks{0};
   Vec3 current = from;
@@ -128,6 +130,14 @@ bool Flight::plan(const Vec3& from, double speed, const RobotMap& map) {
   return true;
 }
 
+void Flight::planAround(const Vec3& from, double speed, const RobotMap& map,
+                        const std::vector<planning::AvoidSphere>& blockers) {
+  const auto route = route_;  // the current profile's marks index this route
+  dropReachedWaypoints();
+  if (!route_.empty() && plan(from, speed, map, blockers)) return;
+  route_ = route;
+}
+
 bool Flight::remainingPathClear(const RobotMap& map) const {
   const auto& grid = map.grid();
   const auto options = searchOptions(grid);
@@ -151,7 +161,8 @@ bool Flight::remainingPathClear(const RobotMap& map) const {
 }
 
 agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const RobotMap& map,
-                                        agent::AgentSetpoint setpoint, bool* holding) {
+                                        agent::AgentSetpoint setpoint, bool* holding,
+                                        std::vector<planning::AvoidSphere>* blockers) {
   *holding = false;
   const Vec3 me = view.odometry.position;
   const size_t myPriority = self_;
@@ -170,7 +181,22 @@ agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const Robo
         away.z() += 0.5;
       escape += away;
     }
-    if (!higher) continue;
+    if (!higher) {
+      // Do not fly into it (it may be holding for us): stop short of minSeparation + radius, or
+      // of the current distance when already closer.
+      const double keep = std::min(options_.minSeparation + options_.radius, distance);
+      bool inTheWay = false;
+      for (double ahead = 0.5; !inTheWay && distance < options_.separation &&
+                               ahead <= options_.lookahead && !profile_.empty();
+           ahead += 0.5)
+        inTheWay = (profile_.pointAt(profile_.travelled() + ahead) - other).norm() < keep;
+      if (!inTheWay) continue;
+      *holding = true;
+      if (blockers)  // cells whose centre is outside keep every path point this far from it
+        blockers->push_back({other, options_.minSeparation + options_.radius +
+                                        0.5 * map.grid().resolution() * std::sqrt(3.0)});
+      continue;
+    }
     // Hold while the higher-priority unit is near our next few metres of path.
     bool near = distance < options_.separation;
     for (double ahead = 0.0; !near && ahead <= options_.lookahead && !profile_.empty();
@@ -290,7 +316,17 @@ agent::AgentSetpoint Flight::step(const agent::AgentView& view, const RobotMap& 
           }
         }
       }
-      const auto preview = deconflict(view, map, profile_.setpoint(), &holding);
+      std::vector<planning::AvoidSphere> blockers;
+      auto preview = deconflict(view, map, profile_.setpoint(), &holding, &blockers);
+      if (blockers.empty()) {
+        yieldingSince_ = kNever;
+      } else if (yieldingSince_ == kNever) {
+        yieldingSince_ = view.time;
+      } else if (view.time - yieldingSince_ >= options_.yieldPatience) {
+        yieldingSince_ = view.time;  // when this fails, the next try is a period later
+        planAround(position, view.odometry.velocity.norm(), map, blockers);
+        preview = deconflict(view, map, profile_.setpoint(), &holding);
+      }
       if (!holding) profile_.advance(position, dt);
       setpoint = holding ? preview : profile_.setpoint();
       setpoint.yaw = view.odometry.yaw;

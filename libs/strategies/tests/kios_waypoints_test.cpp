@@ -52,6 +52,31 @@ TEST(KiosWaypoints, ViewCellsAreFreeCellsBesideOccupiedOnesLookingAtThem) {
   EXPECT_TRUE(viewCells(grid, {far}, 1.0).empty());
 }
 
+TEST(KiosWaypoints, TheGroundInsideABoxIsNotASurfaceToInspect) {
+  // The wall stands on the ground (the cells of z in [0, 1)); its box reaches down to it.
+  VoxelGrid grid = wallGrid();
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 30; ++x)
+      grid.set(Index3(x, y, 0), CellState::Occupied);
+  for (int z = 1; z < 8; ++z)
+    for (int y = 8; y < 22; ++y)
+      grid.set(Index3(15, y, z), CellState::Occupied);
+  BoxView box = wallBox();
+  box.center.z() = 11.0;
+  box.size.z() = 22.0;
+  // The cells in the corner between the wall's foot and the ground look at both (45 degrees):
+  // they stay.
+  const auto countUp = [](const std::vector<mapping::SurfaceVoxel>& cells) {
+    return std::count_if(cells.begin(), cells.end(),
+                         [](const mapping::SurfaceVoxel& c) { return c.normal.z() > 0.99; });
+  };
+  const auto all = viewCells(grid, {box}, 1.0);
+  const auto above = viewCells(grid, {box}, 1.0, 0.0);
+  EXPECT_GT(countUp(all), 2);     // the ground beside the wall, inside the box's margin
+  EXPECT_EQ(countUp(above), 14);  // the wall's top only, one sample per cell
+  EXPECT_EQ(all.size() - above.size(), static_cast<size_t>(countUp(all) - 14));
+}
+
 TEST(KiosWaypoints, WaypointsHoldTheCameraAtTheDistanceFacingTheWall) {
   const VoxelGrid grid = wallGrid();
   WaypointOptions options;

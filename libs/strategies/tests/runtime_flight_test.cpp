@@ -190,31 +190,74 @@ TEST(Flight, NeverSendsASetpointFarFromTheVehicleOrAcrossAWall) {
   EXPECT_EQ(flight.guardedSetpoints(), 2u);
 }
 
-TEST(Flight, LowerPriorityHoldsForAHigherPriorityNeighbourOnItsPath) {
-  const std::vector<BoxView> boxes{makeBox({0, 30, 6}, {2, 2, 2})};
-  RobotMap map(mapOptions(UnknownSpace::BlockedNearBoxes), boxes, 0.0);
-  FlightOptions flightOptions;
-  flightOptions.takeoffHeight = 1.0;
-  Flight flight(flightOptions, {"first", "second"}, 1);
+// Units "first" and "second" (fleet order) by a small box; unit `self` has climbed 1 m from
+// (0, 20, 4) and is about to fly.
+struct TwoUnits {
+  TwoUnits(const Vec3& boxCentre, size_t self)
+      : map(mapOptions(UnknownSpace::BlockedNearBoxes), {makeBox(boxCentre, {2, 2, 2})}, 0.0),
+        flight(options(), {"first", "second"}, self) {
+    vehicle.view.name = self == 0 ? "first" : "second";
+    vehicle.view.odometry.position = Vec3(0, 20, 4);
+    for (int i = 0; i < 40; ++i)
+      step();
+  }
+  static FlightOptions options() {
+    FlightOptions o;
+    o.takeoffHeight = 1.0;
+    return o;
+  }
+  // The other unit, hovering at `position`.
+  void addOther(const Vec3& position) {
+    agent::NeighbourInfo other;
+    other.name = vehicle.view.name == "first" ? "second" : "first";
+    other.role = agent::Role::Photographer;
+    other.odometry.position = position;
+    vehicle.view.neighbours.push_back(other);
+  }
+  void step() { vehicle.apply(flight.step(vehicle.view, map), 0.1); }
+
+  RobotMap map;
+  Flight flight;
   PerfectVehicle vehicle;
-  vehicle.view.name = "second";
-  vehicle.view.odometry.position = Vec3(0, 20, 4);
-  for (int i = 0; i < 40; ++i)  // take off
-    vehicle.apply(flight.step(vehicle.view, map), 0.1);
-  flight.goTo(Vec3(0, 40, 5), 2.0);
-  agent::NeighbourInfo other;
-  other.name = "first";
-  other.role = agent::Role::Photographer;
-  other.odometry.position = Vec3(0, 23, 5);  // hovering 3 m ahead
-  vehicle.view.neighbours.push_back(other);
-  const Vec3 before = vehicle.view.odometry.position;
+};
+
+TEST(Flight, LowerPriorityHoldsForAHigherPriorityNeighbourOnItsPath) {
+  TwoUnits units({0, 30, 6}, 1);
+  units.flight.goTo(Vec3(0, 40, 5), 2.0);
+  units.addOther(Vec3(0, 23, 5));  // hovering 3 m ahead
+  const Vec3 before = units.vehicle.view.odometry.position;
   for (int i = 0; i < 50; ++i)
-    vehicle.apply(flight.step(vehicle.view, map), 0.1);
-  EXPECT_LT((vehicle.view.odometry.position - before).norm(), 0.5);
-  vehicle.view.neighbours.clear();  // it left
-  for (int i = 0; i < 200 && !flight.done(); ++i)
-    vehicle.apply(flight.step(vehicle.view, map), 0.1);
-  EXPECT_TRUE(flight.done());
+    units.step();
+  EXPECT_LT((units.vehicle.view.odometry.position - before).norm(), 0.5);
+  units.vehicle.view.neighbours.clear();  // it left
+  for (int i = 0; i < 200 && !units.flight.done(); ++i)
+    units.step();
+  EXPECT_TRUE(units.flight.done());
+}
+
+TEST(Flight, HigherPriorityStopsShortOfALowerPriorityUnitInItsWayThenGoesAround) {
+  // A mission lost two units this way: the higher-priority one flew its path through a
+  // lower-priority one that was holding for it, until both backed away and came back.
+  TwoUnits units({9, 30, 6}, 0);  // the box off the straight line
+  const Vec3 goal(0, 40, 5), other(0, 27, 5);
+  units.flight.goTo(goal, 2.0);
+  units.addOther(other);  // holding on the straight line
+  const auto options = TwoUnits::options();
+  double nearest = 1e9;
+  double stoppedFor = 0.0;
+  for (int i = 0; i < 400 && !units.flight.done(); ++i) {
+    const Vec3 before = units.vehicle.view.odometry.position;
+    units.step();
+    const Vec3 p = units.vehicle.view.odometry.position;
+    nearest = std::min(nearest, (p - other).norm());
+    if ((p - before).norm() < 1e-6 && p.y() > 21.0 && p.y() < 27.0) stoppedFor += 0.1;
+  }
+  EXPECT_TRUE(units.flight.done());
+  EXPECT_LT((units.vehicle.view.odometry.position - goal).norm(), 0.6);
+  EXPECT_GE(nearest, options.minSeparation + options.radius - 1e-9);
+  // It waited for the other to get out of the way before it went around.
+  EXPECT_GE(stoppedFor, options.yieldPatience - 0.2);
+  EXPECT_FALSE(units.flight.failed());
 }
 
 }  // namespace

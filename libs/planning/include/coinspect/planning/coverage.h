@@ -29,6 +29,12 @@ struct InspectionPatch {
 std::vector<InspectionPatch> groupSurface(const std::vector<mapping::SurfaceVoxel>& voxels,
                                           double patchSize);
 
+// The mapped ground under the boxes (it lies inside them: boxes reach down to it): a voxel
+// whose centre is within 1.25 cells of `groundZ` and whose normal points up (z > 0.8). No
+// scenario has interest points there (the lowest, on the hangar's landing gear, face sideways),
+// and on the generated hangar it was half of the surface a photographer planned over.
+bool isGroundSurface(const mapping::SurfaceVoxel& voxel, double groundZ, double resolution);
+
 struct CoverageOptions {
   double distance = 6.5;       // m, preferred camera-to-patch distance
   double maxDistance = 8.0;    // m, farther patches do not count as covered

@@ -2,7 +2,8 @@
 // angle). Both use one cost model and one traversability rule, shared with path smoothing:
 //
 //   traversable(cell) = inside the grid, not Occupied, not Unknown under UnknownPolicy::Blocked,
-//                       and grid.clearance(cell) >= PathSearchOptions::clearance
+//                       grid.clearance(cell) >= PathSearchOptions::clearance, and the cell's
+//                       centre outside every PathSearchOptions::avoid sphere
 //   cost of a segment = sum over the cells it crosses of (length inside the cell) x multiplier,
 //   multiplier(cell)  = 1 + softWeight x max(0, 1 - clearance(cell) / softClearance)
 //                         + unknownPenalty (Unknown cells under UnknownPolicy::FreeWithCost)
@@ -33,6 +34,12 @@ enum class UnknownPolicy {
   FreeWithCost  // entered, at (1 + unknownPenalty) times the cost per metre
 };
 
+// Space a path must keep out of that is not in the map (e.g. another robot holding there).
+struct AvoidSphere {
+  Vec3 centre = Vec3::Zero();
+  double radius = 0.0;
+};
+
 struct PathSearchOptions {
   double clearance = 0.0;  // m, required distance field value (robot radius + margin)
   UnknownPolicy unknown = UnknownPolicy::Blocked;
@@ -44,6 +51,7 @@ struct PathSearchOptions {
   double heuristicWeight = 1.0;
   size_t maxExpansions = 1000000;
   int snapRadius = 3;  // cells: a blocked start or goal moves to the nearest traversable cell
+  std::vector<AvoidSphere> avoid;  // cells whose centre is inside one are not traversable
 };
 
 enum class PathStatus { Found, NoPath, StartBlocked, GoalBlocked, BudgetExhausted };

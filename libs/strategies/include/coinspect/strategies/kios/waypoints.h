@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "coinspect/agent/observations.h"
@@ -24,10 +25,12 @@ using agent::Vec3;
 // Free cells of `grid` with at least one occupied face neighbour, as surface samples: the centre
 // is the face shared with the occupied neighbours (averaged), the normal points out of the
 // surface, i.e. opposite to the view direction (the sum of the unit offsets to the occupied
-// neighbours). Only samples within `boxMargin` of a box count (interest points lie in boxes).
-// Grid order (z, y, x), so the result is deterministic.
-std::vector<mapping::SurfaceVoxel> viewCells(const mapping::VoxelGrid& grid,
-                                             const std::vector<BoxView>& boxes, double boxMargin);
+// neighbours). Only samples within `boxMargin` of a box count (interest points lie in boxes),
+// and none of the ground at `groundZ` (planning::isGroundSurface). Grid order (z, y, x), so the
+// result is deterministic.
+std::vector<mapping::SurfaceVoxel> viewCells(
+    const mapping::VoxelGrid& grid, const std::vector<BoxView>& boxes, double boxMargin,
+    double groundZ = -std::numeric_limits<double>::infinity());
 
 struct InspectionWaypoint {
   uint64_t id = 0;             // the bin's key (planning::InspectionPatch::key)
@@ -40,6 +43,7 @@ struct InspectionWaypoint {
 struct WaypointOptions {
   double spacing = 4.0;    // m, bin size of the surface samples
   double boxMargin = 1.0;  // m, samples farther from every box are dropped
+  double groundZ = -std::numeric_limits<double>::infinity();  // m, its surface is dropped
   // Camera model, distance, limits; `grid` and `pathOptions` are filled from the call.
   planning::ViewpointOptions viewpoint;
 };

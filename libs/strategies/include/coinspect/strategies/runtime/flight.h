@@ -10,7 +10,11 @@
 // Neighbours in line of sight (their odometry is in the view) are deconflicted by priority (fleet
 // order: the lower index goes first): a unit holds while a higher-priority neighbour is within
 // `separation` of its next few metres of path, and every unit closer than `minSeparation` to a
-// neighbour backs away from it (the lower-priority one also climbs).
+// neighbour backs away from it (the lower-priority one also climbs). Having the right of way does
+// not mean flying into a unit that holds on the path: a unit does not advance while its next
+// `lookahead` metres would bring it closer than minSeparation + radius to a lower-priority
+// neighbour within `separation` (nor closer than it already is), and after `yieldPatience` it
+// plans around the neighbours in its way (both units waiting for each other would never move).
 //
 // The vehicle's tracking controller flies straight at its setpoint as fast as its limits allow,
 // so a setpoint far from the vehicle would be reached along a line nobody checked. Every setpoint
@@ -42,6 +46,7 @@ struct FlightOptions {
   double separation = 4.0;         // m, hold distance to higher-priority neighbours' positions
   double minSeparation = 2.0;      // m, back away from any neighbour closer than this
   double lookahead = 4.0;          // m of own path checked against neighbours
+  double yieldPatience = 3.0;      // s held by lower-priority units before planning around them
   double recheckDistance = 20.0;   // m of remaining path checked again after each map rebuild
   size_t maxExpansions = 200000;   // search budget to the first waypoint (a tenth per later leg)
   double maxSetpointOffset = 2.5;  // m between the vehicle and any setpoint after take-off
@@ -82,11 +87,18 @@ class Flight {
  private:
   enum class Phase { Takeoff, Planning, Flying, Idle };
   planning::PathSearchOptions searchOptions(const mapping::VoxelGrid& grid) const;
-  bool plan(const Vec3& from, double speed, const RobotMap& map);
+  bool plan(const Vec3& from, double speed, const RobotMap& map,
+            const std::vector<planning::AvoidSphere>& avoid = {});
+  // Plans the rest of the route around `blockers` (lower-priority units holding in the way);
+  // keeps the current profile when that fails.
+  void planAround(const Vec3& from, double speed, const RobotMap& map,
+                  const std::vector<planning::AvoidSphere>& blockers);
   bool remainingPathClear(const RobotMap& map) const;
   void dropReachedWaypoints();  // the route keeps only waypoints the profile has not reached
+  // `blockers` (optional): lower-priority units this unit holds for, as spheres to plan around.
   agent::AgentSetpoint deconflict(const agent::AgentView& view, const RobotMap& map,
-                                  agent::AgentSetpoint setpoint, bool* holding);
+                                  agent::AgentSetpoint setpoint, bool* holding,
+                                  std::vector<planning::AvoidSphere>* blockers = nullptr);
   size_t priorityOf(const std::string& name) const;
   agent::AgentSetpoint bounded(const Vec3& position, const RobotMap& map,
                                agent::AgentSetpoint setpoint);
@@ -106,6 +118,7 @@ class Flight {
   uint64_t checkedGridVersion_ = 0;
   double lastAttempt_ = -1e300;
   int failures_ = 0;
+  double yieldingSince_;  // since when lower-priority units hold this unit up (-inf: they do not)
   double lastTime_ = 0.0;
   Vec3 takeoffTarget_ = Vec3::Zero();
   size_t guardedSetpoints_ = 0;
