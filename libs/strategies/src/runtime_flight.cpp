@@ -211,6 +211,10 @@ agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const Robo
       across = across.norm() > 1e-3 ? Vec3(across.normalized()) : Vec3::Zero();
       escape += across + Vec3(0, 0, 0.5);
     }
+    // Make room: it stops short of us when we are in its way (and would wait for ever), so back
+    // off to `separation` (closer than minSeparation the backing away above does it).
+    if (distance >= options_.minSeparation && distance < options_.separation)
+      escape += offset / distance;
   }
   if (escape.norm() < 1e-6) {
     if (*holding) setpoint.velocity = Vec3::Zero();  // wait where the reference point is
@@ -224,6 +228,15 @@ agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const Robo
   out.velocity = Vec3::Zero();
   out.acceleration = Vec3::Zero();
   out.position = planning::segmentTraversable(grid, me, target, options) ? target : me;
+  // The unit stays where it backed off to: flying back to the reference point it had brought the
+  // two units together again (caric-baseline, generated mbs, seed 2). A flight plans again from
+  // there.
+  hoverPoint_ = out.position;
+  if (phase_ == Phase::Flying) {
+    dropReachedWaypoints();
+    phase_ = route_.empty() ? Phase::Idle : Phase::Planning;
+    lastAttempt_ = view.time;
+  }
   return out;
 }
 

@@ -191,15 +191,20 @@ TEST(Flight, NeverSendsASetpointFarFromTheVehicleOrAcrossAWall) {
 }
 
 // Units "first" and "second" (fleet order) by a small box; unit `self` has climbed 1 m from
-// (0, 20, 4) and is about to fly.
+// (0, 22, 4), well inside the map's region, and is about to fly.
 struct TwoUnits {
   TwoUnits(const Vec3& boxCentre, size_t self)
-      : map(mapOptions(UnknownSpace::BlockedNearBoxes), {makeBox(boxCentre, {2, 2, 2})}, 0.0),
+      : map(wideMapOptions(), {makeBox(boxCentre, {2, 2, 2})}, 0.0),
         flight(options(), {"first", "second"}, self) {
     vehicle.view.name = self == 0 ? "first" : "second";
-    vehicle.view.odometry.position = Vec3(0, 20, 4);
+    vehicle.view.odometry.position = Vec3(0, 22, 4);
     for (int i = 0; i < 40; ++i)
       step();
+  }
+  static RobotMapOptions wideMapOptions() {
+    auto o = mapOptions(UnknownSpace::BlockedNearBoxes);
+    o.regionMargin = 20.0;
+    return o;
   }
   static FlightOptions options() {
     FlightOptions o;
@@ -224,11 +229,17 @@ struct TwoUnits {
 TEST(Flight, LowerPriorityHoldsForAHigherPriorityNeighbourOnItsPath) {
   TwoUnits units({0, 30, 6}, 1);
   units.flight.goTo(Vec3(0, 40, 5), 2.0);
-  units.addOther(Vec3(0, 23, 5));  // hovering 3 m ahead
-  const Vec3 before = units.vehicle.view.odometry.position;
-  for (int i = 0; i < 50; ++i)
+  const Vec3 other(0, 25, 5);
+  units.addOther(other);  // hovering 3 m ahead
+  // It does not fly on; it backs off to `separation`, out of the other's way.
+  for (int i = 0; i < 50; ++i) {
     units.step();
-  EXPECT_LT((units.vehicle.view.odometry.position - before).norm(), 0.5);
+    EXPECT_GE((units.vehicle.view.odometry.position - other).norm(), 3.0 - 1e-9) << i;
+  }
+  const double separation = TwoUnits::options().separation;
+  const double distance = (units.vehicle.view.odometry.position - other).norm();
+  EXPECT_GE(distance, separation);
+  EXPECT_LE(distance, separation + 1.5);  // one escape step at most beyond
   units.vehicle.view.neighbours.clear();  // it left
   for (int i = 0; i < 200 && !units.flight.done(); ++i)
     units.step();
@@ -250,7 +261,7 @@ TEST(Flight, HigherPriorityStopsShortOfALowerPriorityUnitInItsWayThenGoesAround)
     units.step();
     const Vec3 p = units.vehicle.view.odometry.position;
     nearest = std::min(nearest, (p - other).norm());
-    if ((p - before).norm() < 1e-6 && p.y() > 21.0 && p.y() < 27.0) stoppedFor += 0.1;
+    if ((p - before).norm() < 1e-6 && p.y() > 22.5 && p.y() < 27.0) stoppedFor += 0.1;
   }
   EXPECT_TRUE(units.flight.done());
   EXPECT_LT((units.vehicle.view.odometry.position - goal).norm(), 0.6);

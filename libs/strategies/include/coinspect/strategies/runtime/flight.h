@@ -9,12 +9,13 @@
 //
 // Neighbours in line of sight (their odometry is in the view) are deconflicted by priority (fleet
 // order: the lower index goes first): a unit holds while a higher-priority neighbour is within
-// `separation` of its next few metres of path, and every unit closer than `minSeparation` to a
-// neighbour backs away from it (the lower-priority one also climbs). Having the right of way does
-// not mean flying into a unit that holds on the path: a unit does not advance while its next
-// `lookahead` metres would bring it closer than minSeparation + radius to a lower-priority
-// neighbour within `separation` (nor closer than it already is), and after `yieldPatience` it
-// plans around the neighbours in its way (both units waiting for each other would never move).
+// `separation` of its next few metres of path and backs off to `separation` from it, and every
+// unit closer than `minSeparation` to a neighbour backs away from it (the lower-priority one also
+// climbs); a unit stays where it backed off to (flying back to its reference point brought two
+// units together again). Having the right of way does not mean flying into a unit that holds on
+// the path: a unit does not advance while its next `lookahead` metres would bring it closer than
+// minSeparation + radius to a lower-priority neighbour within `separation` (nor closer than it
+// already is), and after `yieldPatience` it plans around the neighbours still in its way.
 //
 // The vehicle's tracking controller flies straight at its setpoint as fast as its limits allow,
 // so a setpoint far from the vehicle would be reached along a line nobody checked. Every setpoint
