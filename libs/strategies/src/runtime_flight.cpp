@@ -15,7 +15,7 @@ constexpr double kNever = -std::numeric_limits<double>::infinity();
 }  // namespace
 
 Flight::Flight(const FlightOptions& options, std::vector<std::string> fleet, size_t self)
-    : options_(options), fleet_(std::move(fleet)), self_(self), yieldingSince_(kNever) {}
+    : options_(options), fleet_(std::move(fleet)), self_(self) {}
 
 double Flight::requiredClearance(const mapping::VoxelGrid& grid) const {
   // A path point may lie anywhere in its cell and the surface anywhere in the blocking cell:
@@ -182,13 +182,12 @@ agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const Robo
       escape += away;
     }
     if (!higher) {
+      if (distance >= options_.separation || profile_.empty()) continue;
       // Do not fly into it (it may be holding for us): stop short of minSeparation + radius, or
       // of the current distance when already closer.
       const double keep = std::min(options_.minSeparation + options_.radius, distance);
       bool inTheWay = false;
-      for (double ahead = 0.5; !inTheWay && distance < options_.separation &&
-                               ahead <= options_.lookahead && !profile_.empty();
-           ahead += 0.5)
+      for (double ahead = 0.5; !inTheWay && ahead <= options_.lookahead; ahead += 0.5)
         inTheWay = (profile_.pointAt(profile_.travelled() + ahead) - other).norm() < keep;
       if (!inTheWay) continue;
       *holding = true;

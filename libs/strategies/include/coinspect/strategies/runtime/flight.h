@@ -24,6 +24,7 @@
 // plans again from there).
 #pragma once
 
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -119,7 +120,8 @@ class Flight {
   uint64_t checkedGridVersion_ = 0;
   double lastAttempt_ = -1e300;
   int failures_ = 0;
-  double yieldingSince_;  // since when lower-priority units hold this unit up (-inf: they do not)
+  // Since when lower-priority units hold this unit up (-inf: they do not).
+  double yieldingSince_ = -std::numeric_limits<double>::infinity();
   double lastTime_ = 0.0;
   Vec3 takeoffTarget_ = Vec3::Zero();
   size_t guardedSetpoints_ = 0;
