@@ -10,9 +10,12 @@
 #include <vector>
 
 #include "coinspect/core/error.h"
+#include "coinspect/core/text.h"
+#include "coinspect/eval/view_bound.h"
 #include "coinspect/world/caric_formats.h"
 #include "coinspect/world/generators.h"
 #include "coinspect/world/mesh_io.h"
+#include "coinspect/world/ray_caster.h"
 #include "coinspect/world/scenario_files.h"
 #include "commands.h"
 #include "scenario_source.h"
@@ -29,6 +32,9 @@ struct ScenarioOptions {
   std::string out;
   std::string mesh;
   std::string points;
+  std::string clearances = "0,1,2,3";
+  std::string csv;
+  std::string mode = "caric";
 };
 
 const char* const kSourceHelp =
@@ -130,6 +136,73 @@ void runExport(const ScenarioOptions& options) {
   }
 }
 
+std::vector<double> parseClearances(const std::string& text) {
+  std::vector<double> values;
+  for (const std::string& field : splitTokens(text, ",")) {
+    const auto value = parseFiniteDouble(field);
+    if (!value || *value < 0.0)
+      throw InputError("scenario bound", "--clearance",
+                       "'" + field + "' is not a distance >= 0 (metres, comma-separated)");
+    values.push_back(*value);
+  }
+  if (values.empty()) throw InputError("scenario bound", "--clearance", "needs at least one value");
+  return values;
+}
+
+// idx,x,y,z,best_<clearance>...: each point's best score over the views of each clearance.
+void writeBoundCsv(std::FILE* out, const std::string& path, const world::InterestPointSet& points,
+                   const std::vector<double>& clearances,
+                   const std::vector<std::vector<double>>& best) {
+  std::fprintf(out, "idx,x,y,z");
+  for (const double c : clearances)
+    std::fprintf(out, ",best_%g", c);
+  std::fprintf(out, "\n");
+  for (size_t i = 0; i < points.size(); ++i) {
+    const auto& p = points[i].position;
+    std::fprintf(out, "%zu,%.4f,%.4f,%.4f", i, p.x(), p.y(), p.z());
+    for (const auto& column : best)
+      std::fprintf(out, ",%.4f", column[i]);
+    std::fprintf(out, "\n");
+  }
+  if (std::fclose(out) != 0) throw InputError(path, "--csv", "could not be written completely");
+}
+
+void runBound(const ScenarioOptions& options) {
+  const sensing::ScoringMode mode = sensing::parseScoringMode(options.mode, "--mode");
+  eval::ViewBoundOptions bound;
+  bound.clearances = parseClearances(options.clearances);
+  const world::Scenario s = loadScenarioSource(options.source, options.seed);
+  // The first photographer's camera, else the first UAV's (all CARIC cameras are the same).
+  const auto hasRole = [&](world::UnitRole role, bool wanted) {
+    return std::find_if(s.fleet.begin(), s.fleet.end(),
+                        [&](const auto& unit) { return (unit.role == role) == wanted; });
+  };
+  auto chosen = hasRole(world::UnitRole::Photographer, true);
+  if (chosen == s.fleet.end()) chosen = hasRole(world::UnitRole::GroundStation, false);
+  const world::UnitSpec* photographer = chosen == s.fleet.end() ? nullptr : &*chosen;
+  if (photographer == nullptr)
+    throw InputError(options.source, "fleet", "has no unit with a camera to look with");
+  const world::RayCaster caster(s.meshes, s.groundZ);
+  // Open the CSV first: a bad path fails before the (half-minute) computation.
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> csv(nullptr, std::fclose);
+  if (!options.csv.empty()) {
+    csv.reset(std::fopen(options.csv.c_str(), "w"));
+    if (!csv) throw InputError(options.csv, "--csv", "cannot be written");
+  }
+  std::vector<std::vector<double>> best;
+  const auto rows = eval::staticViewBound(s, caster, photographer->camera, mode, bound, &best);
+  if (csv) writeBoundCsv(csv.release(), options.csv, s.interestPoints, bound.clearances, best);
+  std::printf("scenario %s: %zu interest points, camera of %s, %s scoring\n", s.name.c_str(),
+              s.interestPoints.size(), photographer->name.c_str(), sensing::toString(mode));
+  std::printf("static views: %zu distances x %zu directions x 2 sides of each point's normal\n",
+              bound.distances.size(), 1 + 4 * bound.tilts.size());
+  std::printf("%-12s %10s %10s %12s %8s\n", "clearance_m", "views", "detected", "Q", "Q_%");
+  for (const auto& row : rows)
+    std::printf("%-12.2f %10zu %10zu %12.2f %7.1f%%\n", row.clearance, row.views, row.detected,
+                row.score,
+                s.interestPoints.size() ? 100.0 * row.score / s.interestPoints.size() : 0.0);
+}
+
 }  // namespace
 
 void addScenarioCommand(CLI::App& root) {
@@ -167,6 +240,22 @@ void addScenarioCommand(CLI::App& root) {
                        "Interest point output: .pcd (CARIC binary) or .csv "
                        "(x,y,z,nx,ny,nz,idx)");
   exporter->callback([options]() { runExport(*options); });
+
+  CLI::App* bound = scenario->add_subcommand(
+      "bound",
+      "Estimate the best score reachable by static views whose body keeps a clearance from the "
+      "structure (doc/scoring.md)");
+  bound->add_option("source", options->source, kSourceHelp)->required();
+  bound->add_option("--seed", options->seed, "Seed (generator names only)")->capture_default_str();
+  bound
+      ->add_option("--clearance", options->clearances,
+                   "Clearances from the mesh to evaluate, m, comma-separated")
+      ->capture_default_str();
+  bound->add_option("--mode", options->mode, "Scoring mode: caric (reference) or strict")
+      ->capture_default_str();
+  bound->add_option("--csv", options->csv,
+                    "Also write each point's best score per clearance: idx,x,y,z,best_<c>...");
+  bound->callback([options]() { runBound(*options); });
 }
 
 }  // namespace coinspect::app
