@@ -18,12 +18,13 @@ namespace coinspect::strategies::coinspect_strategy {
 namespace {
 
 constexpr double kNever = -1e300;
-constexpr double kFaceSpacing = 4.0;      // m between work-partition samples of the box faces
-constexpr double kPatchSize = 2.0;        // m, surface patches the coverage plans over
-constexpr double kReached = 1.2;          // m from a stop's body position that counts as there
-constexpr size_t kStopsPerPlan = 8;       // viewpoints flown per plan (each leg may need a search)
-constexpr size_t kPatchesPerPlan = 120;   // nearest uninspected patches a plan covers
-constexpr int kAttemptsPerPatch = 2;      // plans that may pick a patch before it is given up
+constexpr double kFaceSpacing = 4.0;     // m between work-partition samples of the box faces
+constexpr double kPatchSize = 2.0;       // m, surface patches the coverage plans over
+constexpr double kSurfaceNearBox = 1.0;  // m: mapped surface farther from every box is not a target
+constexpr double kReached = 1.2;         // m from a stop's body position that counts as there
+constexpr size_t kStopsPerPlan = 8;      // viewpoints flown per plan (each leg may need a search)
+constexpr size_t kPatchesPerPlan = 120;  // nearest uninspected patches a plan covers
+constexpr int kAttemptsPerPatch = 2;     // plans that may pick a patch before it is given up
 constexpr size_t kFramesPerDecision = 4;  // key frames inserted per decision (~2 ms each at 1 m)
 constexpr double kRoofHeight = 3.0;       // m above a free roof where explorers orbit
 
@@ -153,18 +154,8 @@ std::vector<Vec3> CoinspectStrategy::explorationRoute(const agent::AgentView& vi
 void CoinspectStrategy::planInspection(const agent::AgentView& view) {
   lastPlan_ = view.missionTime;
   const auto& grid = map_->grid();
-  const auto& region = map_->region();
-  std::vector<mapping::SurfaceVoxel> surface;
-  const double cell = map_->map().options().resolution;
-  for (const auto& voxel : map_->map().surfaceVoxels(region.min, region.max)) {
-    if (planning::isGroundSurface(voxel, region.min.z(), cell)) continue;
-    for (const auto& box : *view.boxes)
-      if (runtime::distanceToBox(box, voxel.centre) <= 1.0) {
-        surface.push_back(voxel);
-        break;
-      }
-  }
-  const auto grouped = planning::groupSurface(surface, kPatchSize);
+  const auto grouped =
+      planning::groupSurface(map_->surfaceNearBoxes(*view.boxes, kSurfaceNearBox), kPatchSize);
   std::vector<uint32_t> owners;
   for (const auto& patch : grouped) {
     auto owner = owner_.find(patch.key);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "coinspect/core/error.h"
+#include "coinspect/planning/coverage.h"
 
 namespace coinspect::strategies::runtime {
 
@@ -175,6 +176,21 @@ void RobotMap::rebuild() {
       }
   grid_.computeClearance(options_.clearanceCap, true);
   ++gridVersion_;
+}
+
+std::vector<mapping::SurfaceVoxel> RobotMap::surfaceNearBoxes(const std::vector<BoxView>& boxes,
+                                                              double nearBox) const {
+  std::vector<mapping::SurfaceVoxel> out;
+  const double cell = map_.options().resolution;
+  for (const auto& voxel : map_.surfaceVoxels(region_.min, region_.max)) {
+    if (planning::isGroundSurface(voxel, region_.min.z(), cell)) continue;
+    for (const auto& box : boxes)
+      if (distanceToBox(box, voxel.centre) <= nearBox) {
+        out.push_back(voxel);
+        break;
+      }
+  }
+  return out;
 }
 
 }  // namespace coinspect::strategies::runtime

@@ -202,13 +202,7 @@ void StarStrategy::explore(const agent::AgentView& view) {
 void StarStrategy::planInspection(const agent::AgentView& view) {
   lastPlan_ = view.missionTime;
   const auto& grid = map_->grid();
-  const auto& region = map_->region();
-  std::vector<mapping::SurfaceVoxel> surface;
-  const double cell = map_->map().options().resolution;
-  for (const auto& voxel : map_->map().surfaceVoxels(region.min, region.max))
-    if (!planning::isGroundSurface(voxel, groundZ_, cell) &&
-        nearestBoxDistance(*view.boxes, voxel.centre) <= kSurfaceNearBox)
-      surface.push_back(voxel);
+  const auto surface = map_->surfaceNearBoxes(*view.boxes, kSurfaceNearBox);
   const auto open = dropInspected(planning::groupSurface(surface, kPatchSize), inspected_);
   // Photographers take their own share; once it is done (or not mapped yet) they help with the
   // rest. Explorers that finished mapping only help.

@@ -72,6 +72,10 @@ class RobotMap {
   void openColumn(const Vec3& bottom, double height, double radius);
 
   const mapping::OccupancyMap& map() const { return map_; }
+  // The mapped surface worth inspecting: surface voxels within `nearBox` m of a box, not the
+  // ground (planning::isGroundSurface against the region's floor, where robots start).
+  std::vector<mapping::SurfaceVoxel> surfaceNearBoxes(const std::vector<BoxView>& boxes,
+                                                      double nearBox) const;
   // Unknown cells outside the policy's blocking zone already read Free; the clearance field
   // counts the remaining Unknown cells as obstacles.
   const mapping::VoxelGrid& grid() const { return grid_; }

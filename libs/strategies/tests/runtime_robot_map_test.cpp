@@ -1,0 +1,54 @@
+#include "coinspect/strategies/runtime/robot_map.h"
+
+#include <gtest/gtest.h>
+
+namespace coinspect::strategies::runtime {
+namespace {
+
+BoxView axisBox(const Vec3& centre, const Vec3& size) {
+  BoxView box;
+  box.center = centre;
+  box.size = size;
+  return box;
+}
+
+// One scan from (0, 0, 5): a wall at x = 10 inside the box, a wall at y = 8 along the box, 3 m
+// outside it, and the ground in front of the first wall.
+agent::KeyFrame wallsAndGround() {
+  agent::KeyFrame frame;
+  frame.producer = "jurong";
+  frame.position = Vec3(0, 0, 5);
+  for (float a = -4.0f; a <= 4.0f; a += 0.25f)
+    for (float z = 1.0f; z <= 9.0f; z += 0.25f) {
+      frame.points.emplace_back(10.2f, a, z);         // the box's wall
+      frame.points.emplace_back(12.0f + a, 8.2f, z);  // a wall 3 m from the box
+    }
+  for (float x = 2.0f; x <= 9.0f; x += 0.25f)
+    for (float y = -4.0f; y <= 4.0f; y += 0.25f)
+      frame.points.emplace_back(x, y, 0.0f);
+  return frame;
+}
+
+TEST(RobotMap, SurfaceNearBoxesKeepsMappedStructureInABoxNotTheGroundNorStructureFarFromBoxes) {
+  const std::vector<BoxView> boxes = {axisBox(Vec3(12, 0, 5), Vec3(6, 10, 10))};
+  RobotMapOptions options;
+  options.mapResolution = 0.5;
+  RobotMap map(options, boxes, 0.0);
+  map.insertFrame(wallsAndGround());
+  const auto all = map.map().surfaceVoxels(map.region().min, map.region().max);
+  const auto near = map.surfaceNearBoxes(boxes, 1.0);
+  ASSERT_FALSE(near.empty());
+  EXPECT_LT(near.size(), all.size());
+  size_t wall = 0;
+  for (const auto& voxel : near) {
+    EXPECT_GT(voxel.centre.z(), 0.5) << "ground voxel kept at " << voxel.centre.transpose();
+    EXPECT_LT(voxel.centre.y(), 7.0) << "far wall kept at " << voxel.centre.transpose();
+    if (std::abs(voxel.centre.x() - 10.25) < 0.3) ++wall;
+  }
+  EXPECT_GT(wall, 100u);  // 8 x 8 m of wall in 0.5 m cells
+  // With a wider reach the far wall counts too.
+  EXPECT_GT(map.surfaceNearBoxes(boxes, 5.0).size(), near.size());
+}
+
+}  // namespace
+}  // namespace coinspect::strategies::runtime
