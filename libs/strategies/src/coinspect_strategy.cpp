@@ -9,6 +9,7 @@
 #include "coinspect/core/error.h"
 #include "coinspect/planning/routing_tsp.h"
 #include "coinspect/planning/viewpoint.h"
+#include "coinspect/strategies/coinspect/exploration_layers.h"
 #include "coinspect/strategies/coinspect/patch_choice.h"
 #include "coinspect/strategies/runtime/box_geometry.h"
 #include "coinspect/strategies/runtime/camera_aim.h"
@@ -103,8 +104,7 @@ void CoinspectStrategy::initialise(const agent::AgentView& view) {
 // Orbits around each box at the standoff, so the LiDAR sees faces that look into the gaps
 // between structures (an orbit around all boxes at once never does): the boxes, sorted along x,
 // are dealt to the explorers in contiguous runs (explorer k of n takes the k-th run); a box gets
-// one layer at mid-height, or two (at 30 % and 75 %) when taller than 20 m; the boxes are
-// flown nearest first.
+// the layers of explorationLayers; the boxes are flown nearest first.
 std::vector<Vec3> CoinspectStrategy::explorationRoute(const agent::AgentView& view) const {
   size_t explorers = 0, rank = 0;
   for (size_t i = 0; i < unit_.fleet.size(); ++i)
@@ -126,20 +126,7 @@ std::vector<Vec3> CoinspectStrategy::explorationRoute(const agent::AgentView& vi
         std::min_element(mine.begin(), mine.end(), [&](const auto& a, const auto& b) {
           return runtime::distanceToBox(a, from) < runtime::distanceToBox(b, from);
         });
-    const auto bounds = runtime::boxBounds(*nearest);
-    const double bottom = std::max(bounds.min.z(), lowest), top = bounds.max.z();
-    std::vector<double> layers =
-        top - bottom > 20.0
-            ? std::vector<double>{bottom + 0.3 * (top - bottom), bottom + 0.75 * (top - bottom)}
-            : std::vector<double>{0.5 * (bottom + std::max(bottom, top))};
-    // A roof nothing stands on is only seen from above (on MBS the sky deck's 355 roof points
-    // were never mapped from its mid-height orbit).
-    const bool covered = std::any_of(boxes.begin(), boxes.end(), [&](const auto& other) {
-      const auto b = runtime::boxBounds(other);
-      return b.min.z() >= top - 1.0 && b.min.x() < bounds.max.x() && b.max.x() > bounds.min.x() &&
-             b.min.y() < bounds.max.y() && b.max.y() > bounds.min.y();
-    });
-    if (!covered) layers.push_back(top + kRoofHeight);
+    const auto layers = explorationLayers(*nearest, boxes, lowest, kRoofHeight);
     for (const double z : layers) {
       auto orbit = runtime::standoffOrbit(*nearest, z, options_.exploreStandoff, 6.0, from);
       orbit.push_back(orbit.front());
