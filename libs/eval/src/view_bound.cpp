@@ -61,7 +61,8 @@ std::vector<ViewBoundRow> staticViewBound(const world::Scenario& scenario,
   checkList(options.tilts, "tilt", true);
   const auto& points = scenario.interestPoints;
   const size_t levels = options.clearances.size();
-  const double widest = *std::max_element(options.clearances.begin(), options.clearances.end());
+  const auto [narrowest, widest] =
+      std::minmax_element(options.clearances.begin(), options.clearances.end());
   std::vector<std::vector<double>> best(levels, std::vector<double>(points.size(), 0.0));
   std::vector<ViewBoundRow> rows(levels);
   for (size_t k = 0; k < levels; ++k)
@@ -78,11 +79,9 @@ std::vector<ViewBoundRow> staticViewBound(const world::Scenario& scenario,
           const sensing::CaptureState state =
               sensing::aimCamera(camera, target, -direction, distance);
           if (state.position.z() < scenario.groundZ + options.minHeight) continue;
-          const double clearance = caster.distanceToSurface(state.position, widest + 1e-6);
-          bool any = false;
-          for (size_t k = 0; k < levels; ++k)
-            any = any || clearance >= options.clearances[k];
-          if (!any || insideStructure(caster, sensing::cameraPose(camera, state).position))
+          const double clearance = caster.distanceToSurface(state.position, *widest + 1e-6);
+          if (clearance < *narrowest ||
+              insideStructure(caster, sensing::cameraPose(camera, state).position))
             continue;
           scorer.score(camera, state, none, scores);
           for (size_t k = 0; k < levels; ++k) {
