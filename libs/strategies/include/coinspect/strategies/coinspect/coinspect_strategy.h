@@ -17,7 +17,7 @@
 //   back into its line of sight periodically and before the end.
 //
 // Config ([coinspect], every key optional):
-//   explore_time = 180        s, explorers map for at most this long before inspecting
+//   explore_time = 300        s, explorers map for at most this long before inspecting
 //   explore_standoff = 12     m from the boxes' bounds for the exploration orbits
 //   view_distance = 0.9       fraction of the full-resolution distance to hold the camera at
 //   replan_period = 8         s between inspection plans
@@ -48,7 +48,7 @@
 namespace coinspect::strategies::coinspect_strategy {
 
 struct CoinspectOptions {
-  double exploreTime = 180.0;
+  double exploreTime = 300.0;
   double exploreStandoff = 12.0;
   double viewDistance = 0.9;
   double replanPeriod = 8.0;
