@@ -1,5 +1,6 @@
 // `coinspect scenario`: list the built-in generators, generate a scenario into a folder, describe
-// any scenario source, and export its geometry and interest points for other tools.
+// any scenario source, export its geometry and interest points for other tools, and estimate the
+// score that views keeping a clearance from its structure can reach (bound).
 #include <algorithm>
 #include <cinttypes>
 #include <cmath>
@@ -208,7 +209,7 @@ void runBound(const ScenarioOptions& options) {
 void addScenarioCommand(CLI::App& root) {
   auto options = std::make_shared<ScenarioOptions>();
   CLI::App* scenario =
-      root.add_subcommand("scenario", "List, generate, describe and export scenarios");
+      root.add_subcommand("scenario", "List, generate, describe, export and bound scenarios");
   scenario->require_subcommand(1);
 
   CLI::App* list = scenario->add_subcommand(
