@@ -6,19 +6,15 @@
 #include "coinspect/strategies/caric_baseline.h"
 #include "coinspect/strategies/caric_baseline_plan.h"
 #include "coinspect/testing/input_errors.h"
+#include "test_boxes.h"
 
 namespace coinspect::strategies {
 namespace {
 
+using test::makeBox;
+
 using agent::Role;
 using baseline::UnitStart;
-
-BoxView makeBox(const Vec3& centre, const Vec3& size) {
-  BoxView box;
-  box.center = centre;
-  box.size = size;
-  return box;
-}
 
 // Two explorers far apart, four photographers: two beside each explorer.
 std::vector<UnitStart> fleet() {

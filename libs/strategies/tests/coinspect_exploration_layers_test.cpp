@@ -2,21 +2,18 @@
 
 #include <gtest/gtest.h>
 
+#include "test_boxes.h"
+
 namespace coinspect::strategies::coinspect_strategy {
 namespace {
 
+using test::makeBox;
+
 using agent::Vec3;
 
-agent::BoxView axisBox(const Vec3& centre, const Vec3& size) {
-  agent::BoxView box;
-  box.center = centre;
-  box.size = size;
-  return box;
-}
-
 TEST(ExplorationLayers, TallBoxesGetTwoLayersShortOnesOneAndFreeRoofsOneAbove) {
-  const auto tower = axisBox(Vec3(0, 0, 30), Vec3(20, 10, 50));  // z 5..55
-  const auto shed = axisBox(Vec3(60, 0, 5), Vec3(10, 10, 10));   // z 0..10
+  const auto tower = makeBox(Vec3(0, 0, 30), Vec3(20, 10, 50));  // z 5..55
+  const auto shed = makeBox(Vec3(60, 0, 5), Vec3(10, 10, 10));   // z 0..10
   const std::vector<agent::BoxView> boxes = {tower, shed};
   const auto towerLayers = explorationLayers(tower, boxes, 3.0, 3.0);
   ASSERT_EQ(towerLayers.size(), 3u);
@@ -31,10 +28,10 @@ TEST(ExplorationLayers, TallBoxesGetTwoLayersShortOnesOneAndFreeRoofsOneAbove) {
 }
 
 TEST(ExplorationLayers, OnlyABoxStartingAtOrAboveARoofCoversIt) {
-  const auto tower = axisBox(Vec3(0, 0, 30), Vec3(20, 10, 50));  // z 5..55
-  const auto mast = axisBox(Vec3(40, 0, 20), Vec3(4, 4, 20));    // z 10..30
+  const auto tower = makeBox(Vec3(0, 0, 30), Vec3(20, 10, 50));  // z 5..55
+  const auto mast = makeBox(Vec3(40, 0, 20), Vec3(4, 4, 20));    // z 10..30
   // A deck box 2 m above both roofs covers them; its own roof gets a layer.
-  const auto high = axisBox(Vec3(10, 0, 63), Vec3(80, 20, 12));  // z 57..69
+  const auto high = makeBox(Vec3(10, 0, 63), Vec3(80, 20, 12));  // z 57..69
   EXPECT_EQ(explorationLayers(tower, {tower, high, mast}, 3.0, 3.0).size(), 2u);
   EXPECT_EQ(explorationLayers(mast, {tower, high, mast}, 3.0, 3.0).size(), 1u);
   const auto deckLayers = explorationLayers(high, {tower, high, mast}, 3.0, 3.0);
@@ -42,10 +39,10 @@ TEST(ExplorationLayers, OnlyABoxStartingAtOrAboveARoofCoversIt) {
   EXPECT_DOUBLE_EQ(deckLayers[1], 72.0);
   // CARIC MBS: the sky deck's box starts below the towers' tops; the towers keep their layer
   // 3 m above the top (it maps the deck's sides, see the header).
-  const auto deck = axisBox(Vec3(10, 0, 56), Vec3(80, 20, 12));  // z 50..62
+  const auto deck = makeBox(Vec3(10, 0, 56), Vec3(80, 20, 12));  // z 50..62
   EXPECT_EQ(explorationLayers(tower, {tower, deck}, 3.0, 3.0).size(), 3u);
   // A box beside the tower, reaching higher but not over it, does not cover it either.
-  const auto beside = axisBox(Vec3(30, 0, 70), Vec3(10, 10, 20));
+  const auto beside = makeBox(Vec3(30, 0, 70), Vec3(10, 10, 20));
   EXPECT_EQ(explorationLayers(tower, {tower, beside}, 3.0, 3.0).size(), 3u);
 }
 

@@ -2,18 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include "test_boxes.h"
+
 namespace coinspect::strategies::coinspect_strategy {
 namespace {
 
-agent::BoxView box(const Vec3& centre, const Vec3& size) {
-  agent::BoxView out;
-  out.center = centre;
-  out.size = size;
-  return out;
-}
+using test::makeBox;
 
 TEST(WorkPartition, FaceSamplesCoverTheAreaAndSkipTheFloor) {
-  const std::vector<agent::BoxView> boxes = {box(Vec3(0, 0, 5), Vec3(10, 4, 10))};
+  const std::vector<agent::BoxView> boxes = {makeBox(Vec3(0, 0, 5), Vec3(10, 4, 10))};
   const auto items = sampleBoxFaces(boxes, 2.0, 0.0, 1.0);
   double area = 0.0;
   for (const auto& item : items) {
@@ -22,13 +19,13 @@ TEST(WorkPartition, FaceSamplesCoverTheAreaAndSkipTheFloor) {
   }
   EXPECT_NEAR(area, 2 * (10 * 10 + 4 * 10) + 10 * 4, 1e-9);
   // A raised box keeps its bottom face.
-  const auto raised = sampleBoxFaces({box(Vec3(0, 0, 20), Vec3(10, 4, 10))}, 2.0, 0.0, 1.0);
+  const auto raised = sampleBoxFaces({makeBox(Vec3(0, 0, 20), Vec3(10, 4, 10))}, 2.0, 0.0, 1.0);
   EXPECT_GT(raised.size(), items.size());
 }
 
 TEST(WorkPartition, RegionsFollowCapacitiesAndAreCompact) {
-  const std::vector<agent::BoxView> boxes = {box(Vec3(0, 0, 25), Vec3(20, 10, 50)),
-                                             box(Vec3(60, 0, 25), Vec3(20, 10, 50))};
+  const std::vector<agent::BoxView> boxes = {makeBox(Vec3(0, 0, 25), Vec3(20, 10, 50)),
+                                             makeBox(Vec3(60, 0, 25), Vec3(20, 10, 50))};
   const auto items = sampleBoxFaces(boxes, 2.0, 0.0, 1.0);
   const std::vector<double> capacities = {0.5, 1.0, 1.0, 1.0, 0.5};
   const auto region = partitionWork(items, capacities);

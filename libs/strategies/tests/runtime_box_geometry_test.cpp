@@ -5,17 +5,12 @@
 #include <cmath>
 
 #include "coinspect/strategies/runtime/box_geometry.h"
+#include "test_boxes.h"
 
 namespace coinspect::strategies::runtime {
 namespace {
 
-BoxView makeBox(const Vec3& centre, const Vec3& size, double yaw = 0.0) {
-  BoxView box;
-  box.center = centre;
-  box.size = size;
-  box.rotation = Eigen::AngleAxisd(yaw, Vec3::UnitZ()).toRotationMatrix();
-  return box;
-}
+using test::makeBox;
 
 TEST(BoxGeometry, BoundsOfARotatedBoxAndTheMissionRegion) {
   const auto box = makeBox({0, 0, 5}, {2, 2, 10}, M_PI / 4);

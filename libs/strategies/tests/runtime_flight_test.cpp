@@ -6,16 +6,12 @@
 
 #include "coinspect/strategies/runtime/flight.h"
 #include "coinspect/strategies/runtime/robot_map.h"
+#include "test_boxes.h"
 
 namespace coinspect::strategies::runtime {
 namespace {
 
-BoxView makeBox(const Vec3& centre, const Vec3& size) {
-  BoxView box;
-  box.center = centre;
-  box.size = size;
-  return box;
-}
+using test::makeBox;
 
 // A key frame of a wall x = 0, |y| <= 8, 0 <= z <= 12, seen from `origin`.
 agent::KeyFrameView wallFrame(const Vec3& origin) {

@@ -2,15 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include "test_boxes.h"
+
 namespace coinspect::strategies::runtime {
 namespace {
 
-BoxView axisBox(const Vec3& centre, const Vec3& size) {
-  BoxView box;
-  box.center = centre;
-  box.size = size;
-  return box;
-}
+using test::makeBox;
 
 // One scan from (0, 0, 5): a wall at x = 10 inside the box, a wall at y = 8 along the box, 3 m
 // outside it, and the ground in front of the first wall.
@@ -30,7 +27,7 @@ agent::KeyFrame wallsAndGround() {
 }
 
 TEST(RobotMap, SurfaceNearBoxesKeepsMappedStructureInABoxNotTheGroundNorStructureFarFromBoxes) {
-  const std::vector<BoxView> boxes = {axisBox(Vec3(12, 0, 5), Vec3(6, 10, 10))};
+  const std::vector<BoxView> boxes = {makeBox(Vec3(12, 0, 5), Vec3(6, 10, 10))};
   RobotMapOptions options;
   options.mapResolution = 0.5;
   RobotMap map(options, boxes, 0.0);

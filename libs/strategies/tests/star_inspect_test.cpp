@@ -4,19 +4,16 @@
 
 #include <set>
 
+#include "test_boxes.h"
+
 namespace coinspect::strategies::star {
 namespace {
+
+using test::makeBox;
 
 using mapping::CellState;
 using mapping::Index3;
 using mapping::VoxelGrid;
-
-agent::BoxView makeBox(const Vec3& centre, const Vec3& size) {
-  agent::BoxView box;
-  box.center = centre;
-  box.size = size;
-  return box;
-}
 
 TEST(StarInspect, KeysRoundTripSortedAndUnique) {
   const std::vector<uint64_t> keys{(uint64_t{1} << 63) + 5, 42, 0, 42, 127, 128, ~uint64_t{0}};
