@@ -174,12 +174,13 @@ void runBound(const ScenarioOptions& options) {
   bound.clearances = parseClearances(options.clearances);
   const world::Scenario s = loadScenarioSource(options.source, options.seed);
   // The first photographer's camera, else the first UAV's (all CARIC cameras are the same).
-  const auto hasRole = [&](world::UnitRole role, bool wanted) {
-    return std::find_if(s.fleet.begin(), s.fleet.end(),
-                        [&](const auto& unit) { return (unit.role == role) == wanted; });
-  };
-  auto chosen = hasRole(world::UnitRole::Photographer, true);
-  if (chosen == s.fleet.end()) chosen = hasRole(world::UnitRole::GroundStation, false);
+  auto chosen = std::find_if(s.fleet.begin(), s.fleet.end(), [](const auto& unit) {
+    return unit.role == world::UnitRole::Photographer;
+  });
+  if (chosen == s.fleet.end())
+    chosen = std::find_if(s.fleet.begin(), s.fleet.end(), [](const auto& unit) {
+      return unit.role != world::UnitRole::GroundStation;
+    });
   const world::UnitSpec* photographer = chosen == s.fleet.end() ? nullptr : &*chosen;
   if (photographer == nullptr)
     throw InputError(options.source, "fleet", "has no unit with a camera to look with");
