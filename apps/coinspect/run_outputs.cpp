@@ -1,6 +1,8 @@
 #include "run_outputs.h"
 
+#include <algorithm>
 #include <cinttypes>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <system_error>
@@ -13,6 +15,49 @@
 namespace coinspect::app {
 
 namespace {
+
+std::vector<double> happened(const std::vector<double>& at) {
+  std::vector<double> times;
+  for (const double t : at)
+    if (!std::isnan(t)) times.push_back(t);
+  std::sort(times.begin(), times.end());
+  return times;
+}
+
+record::RunReportFeatures makeFeatures(const sim::MissionSummary& s) {
+  const auto& f = s.features;
+  record::RunReportFeatures r;
+  r.total = f.total;
+  r.discovered = f.discovered;
+  r.assigned = f.assigned;
+  r.inspected = f.inspected;
+  r.collected = f.collected;
+  r.finishRate = f.finishRate();
+  r.finishTime = f.finishTime;
+  r.meetings = {{"gcs_explorer", f.meetingsGcsExplorer},
+                {"explorer_inspector", f.meetingsExplorerInspector},
+                {"other", f.meetingsOther}};
+  r.timeline = {{"discovered", happened(f.discoveredAt)},
+                {"assigned", happened(f.assignedAt)},
+                {"inspected", happened(f.inspectedAt)},
+                {"collected", happened(f.collectedAt)}};
+  for (size_t i = 0; i < f.units.size(); ++i) {
+    const auto& u = f.units[i];
+    record::RunReportFeatureUnit unit;
+    unit.name = s.units[i].name;
+    for (int a = 0; a < agent::kActivityCount; ++a)
+      unit.activitySeconds[agent::toString(static_cast<agent::Activity>(a))] =
+          u.activitySeconds[static_cast<size_t>(a)];
+    unit.idleSeconds =
+        u.activitySeconds[static_cast<size_t>(agent::Activity::TravellingToMeeting)] +
+        u.activitySeconds[static_cast<size_t>(agent::Activity::Waiting)];
+    unit.detected = u.detected;
+    unit.inspected = u.inspected;
+    unit.held = u.held;
+    r.units.push_back(unit);
+  }
+  return r;
+}
 
 record::RunReport makeReport(const sim::MissionSummary& s, const Config& ini,
                              const std::string& configFile) {
@@ -55,6 +100,7 @@ record::RunReport makeReport(const sim::MissionSummary& s, const Config& ini,
   r.simTime = s.simTime;
   r.runMode = s.runMode;
   r.realtimeFactor = s.requestedRealtimeFactor;
+  if (s.features.enabled) r.features = makeFeatures(s);
   r.timing.decisions = s.decisionTimes.count;
   r.timing.decisionTimeMean = s.decisionTimes.mean();
   r.timing.decisionTimeMax = s.decisionTimes.max;

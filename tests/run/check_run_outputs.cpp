@@ -37,6 +37,38 @@ double printedScore(const std::filesystem::path& log) {
   return std::nan("");
 }
 
+// Feature missions: the counts, the timeline curves, the finish rate and the units' activity
+// seconds agree with each other and with the mission clock. Returns an error or "".
+std::string checkFeatures(const nlohmann::json& report) {
+  const auto& f = report.at("features");
+  const size_t total = f.at("total");
+  for (const char* stage : {"discovered", "assigned", "inspected", "collected"}) {
+    const auto& times = f.at("timeline").at(stage);
+    if (times.size() != f.at(stage).get<size_t>() || times.size() > total)
+      return std::string("features timeline of ") + stage + " disagrees with its count";
+    for (size_t i = 1; i < times.size(); ++i)
+      if (times[i].get<double>() < times[i - 1].get<double>())
+        return std::string("features timeline of ") + stage + " not ascending";
+  }
+  const double collected = f.at("collected");
+  if (std::abs(f.at("finish_rate").get<double>() - collected / static_cast<double>(total)) > 1e-12)
+    return "features finish_rate is not collected / total";
+  if (f.at("finish_time").is_null() != (collected < static_cast<double>(total)))
+    return "features finish_time present without every feature collected, or missing";
+  // Every unit alive to the end spent the whole mission clock in some activity.
+  const double missionTime = report.at("clock").at("mission_time");
+  for (size_t i = 0; i < f.at("units").size(); ++i) {
+    if (!report.at("units")[i].at("alive").get<bool>()) continue;
+    double seconds = 0.0;
+    for (const auto& [activity, s] : f.at("units")[i].at("activity_seconds").items())
+      seconds += s.get<double>();
+    if (std::abs(seconds - missionTime) > 1e-6)
+      return "activity seconds of unit " + std::to_string(i) + " sum to " +
+             std::to_string(seconds) + ", not the mission time " + std::to_string(missionTime);
+  }
+  return "";
+}
+
 int check(const std::filesystem::path& folder, const std::filesystem::path& log) {
   std::ifstream reportFile(folder / "report.json");
   const auto report = nlohmann::json::parse(reportFile);
@@ -85,6 +117,8 @@ int check(const std::filesystem::path& folder, const std::filesystem::path& log)
         return fail(name + ".tum line " + std::to_string(i + 1) + ": time or quaternion");
     }
   }
+  if (report.contains("features"))
+    if (const auto problem = checkFeatures(report); !problem.empty()) return fail(problem);
   std::printf("outputs ok: %zu score rows, total %.6f, %zu units x %zu poses\n", rows.size(), score,
               units.size(), expectedPoses);
   return 0;

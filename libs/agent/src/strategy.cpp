@@ -16,6 +16,24 @@ const char* toString(Role role) {
   return "?";
 }
 
+const char* toString(Activity activity) {
+  switch (activity) {
+    case Activity::Unreported:
+      return "unreported";
+    case Activity::Exploring:
+      return "exploring";
+    case Activity::Inspecting:
+      return "inspecting";
+    case Activity::TravellingToMeeting:
+      return "travelling-to-meeting";
+    case Activity::Waiting:
+      return "waiting";
+    case Activity::Returning:
+      return "returning";
+  }
+  return "?";
+}
+
 void StrategyRegistry::registerStrategy(const std::string& name, StrategyFactory factory) {
   if (name.empty()) throw InputError("strategy registry", "", "empty strategy name");
   if (!factory) throw InputError("strategy registry", name, "no factory");

@@ -22,6 +22,27 @@ nlohmann::json unitJson(const RunReportUnit& unit) {
           {"rejected_commands", unit.rejectedCommands}};
 }
 
+nlohmann::json featuresJson(const RunReportFeatures& f) {
+  nlohmann::json units = nlohmann::json::array();
+  for (const auto& u : f.units)
+    units.push_back({{"name", u.name},
+                     {"activity_seconds", u.activitySeconds},
+                     {"idle_seconds", u.idleSeconds},
+                     {"detected", u.detected},
+                     {"inspected", u.inspected},
+                     {"held", u.held}});
+  return {{"total", f.total},
+          {"discovered", f.discovered},
+          {"assigned", f.assigned},
+          {"inspected", f.inspected},
+          {"collected", f.collected},
+          {"finish_rate", f.finishRate},
+          {"finish_time", f.finishTime ? nlohmann::json(*f.finishTime) : nlohmann::json(nullptr)},
+          {"meetings", f.meetings},
+          {"timeline", f.timeline},
+          {"units", units}};
+}
+
 }  // namespace
 
 std::string runReportJson(const RunReport& report) {
@@ -62,6 +83,7 @@ std::string runReportJson(const RunReport& report) {
         {"decision_time_max", report.timing.decisionTimeMax},
         {"decision_time_p50", report.timing.decisionTimeP50},
         {"decision_time_p95", report.timing.decisionTimeP95}}}};
+  if (report.features) json["features"] = featuresJson(*report.features);
   return json.dump(2) + "\n";
 }
 

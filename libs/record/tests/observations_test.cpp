@@ -138,7 +138,11 @@ TEST(Observations, EventKindsKeepTheirNumbersAndRoundTrip) {
       {MissionEventKind::NoTakeoff, "no-takeoff"},
       {MissionEventKind::BlackoutStart, "blackout-start"},
       {MissionEventKind::BlackoutEnd, "blackout-end"},
-      {MissionEventKind::RecordingFailed, "recording-failed"}};
+      {MissionEventKind::RecordingFailed, "recording-failed"},
+      {MissionEventKind::FeatureDetected, "feature-detected"},
+      {MissionEventKind::FeatureInspected, "feature-inspected"},
+      {MissionEventKind::FeatureCollected, "feature-collected"},
+      {MissionEventKind::Meeting, "meeting"}};
   for (size_t number = 0; number < kinds.size(); ++number) {
     const auto [kind, name] = kinds[number];
     EXPECT_EQ(static_cast<size_t>(kind), number) << name;

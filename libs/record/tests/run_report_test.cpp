@@ -103,6 +103,36 @@ TEST(RunReport, HasEveryField) {
   EXPECT_EQ(json.size(), 15u);  // nothing else at the top level
 }
 
+TEST(RunReport, FeaturesOnlyWhenGivenWithANullFinishTimeWhenUnfinished) {
+  RunReport r = sampleReport();
+  EXPECT_FALSE(nlohmann::json::parse(runReportJson(r)).contains("features"));
+  RunReportFeatures f;
+  f.total = 150;
+  f.discovered = 3;
+  f.collected = 1;
+  f.finishRate = 1.0 / 150.0;
+  f.meetings = {{"gcs_explorer", 2}, {"explorer_inspector", 5}, {"other", 0}};
+  f.timeline = {{"discovered", {1.0, 2.5, 2.5}}, {"collected", {9.0}}};
+  RunReportFeatureUnit unit;
+  unit.name = "jurong";
+  unit.activitySeconds = {{"exploring", 15.0}, {"waiting", 4.5}};
+  unit.idleSeconds = 4.5;
+  unit.held = 1;
+  f.units.push_back(unit);
+  r.features = f;
+  auto json = nlohmann::json::parse(runReportJson(r)).at("features");
+  EXPECT_EQ(json.at("total"), 150);
+  EXPECT_TRUE(json.at("finish_time").is_null());
+  EXPECT_EQ(json.at("meetings").at("explorer_inspector"), 5);
+  EXPECT_EQ(json.at("timeline").at("discovered").size(), 3u);
+  EXPECT_EQ(json.at("timeline").at("collected")[0], 9.0);
+  EXPECT_EQ(json.at("units")[0].at("activity_seconds").at("waiting"), 4.5);
+  EXPECT_EQ(json.at("units")[0].at("idle_seconds"), 4.5);
+  r.features->finishTime = 812.5;
+  json = nlohmann::json::parse(runReportJson(r)).at("features");
+  EXPECT_EQ(json.at("finish_time"), 812.5);
+}
+
 TEST(RunReport, TextIsSortedAndEqualForEqualReports) {
   const auto text = runReportJson(sampleReport());
   EXPECT_EQ(text, runReportJson(sampleReport()));

@@ -265,6 +265,14 @@ const char* toString(MissionEventKind kind) {
       return "blackout-end";
     case MissionEventKind::RecordingFailed:
       return "recording-failed";
+    case MissionEventKind::FeatureDetected:
+      return "feature-detected";
+    case MissionEventKind::FeatureInspected:
+      return "feature-inspected";
+    case MissionEventKind::FeatureCollected:
+      return "feature-collected";
+    case MissionEventKind::Meeting:
+      return "meeting";
   }
   return "unknown";
 }

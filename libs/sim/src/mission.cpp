@@ -152,6 +152,20 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
   links = comms::LinkMatrix(units.size());
   network = std::make_unique<comms::Network>(units.size());
   exchange = std::make_unique<comms::KeyFrameExchange>(units.size());
+  if (config.objective == Objective::Features) {
+    featurePeriod = ticksFor(0.1, step);
+    std::vector<std::string> names;
+    std::vector<agent::Role> roles;
+    for (const auto& unit : units) {
+      names.push_back(unit.spec->name);
+      roles.push_back(unit.role);
+    }
+    features = std::make_unique<FeatureTracker>(
+        config.features, scenario.interestPoints, std::move(names), std::move(roles), station,
+        [this](const std::string& kind, const std::string& unit, const std::string& detail) {
+          event(kind, unit, detail);
+        });
+  }
 }
 
 size_t Mission::Impl::unitIndexOf(const std::string& name, const std::string& where) const {
@@ -177,6 +191,7 @@ void Mission::Impl::kill(size_t i, const std::string& cause) {
     unit.ground->setTarget(unit.ground->state().position);  // a dead station stops where it is
   }
   unit.deathCause = cause;
+  if (features) features->unitDied(i, now());
   event("death", unit.spec->name, cause);
 }
 
@@ -282,6 +297,7 @@ void Mission::Impl::monitor() {
           state.velocity.norm() > config.startSpeed) {
         started = true;
         startTime = now();
+        if (features) features->start(startTime);
         event("mission-start", unit.spec->name, "take-off");
         break;
       }
@@ -314,6 +330,7 @@ void Mission::Impl::updateTopology() {
         if (j != u) links.setLinked(static_cast<uint32_t>(u), static_cast<uint32_t>(j), false);
   }
   network->setTopology(links, aliveFlags(), now());
+  if (features && features->exchange(now(), links, aliveFlags())) allCollected = true;
   size_t improved = 0;
   if (station && units[*station].alive()) {
     for (size_t i = 0; i < units.size(); ++i)
@@ -382,6 +399,7 @@ void Mission::Impl::capture(size_t i) {
   }
   ++unit.captures;
   unit.pendingCaptures.push_back(report);
+  if (features && unit.alive()) features->capture(i, now(), scores);
   stages.scoring += secondsSince(stageStart);
 }
 
@@ -433,7 +451,8 @@ bool Mission::Impl::stepOnce() {
   if (config.runMode == RunMode::Realtime && tick % controlPeriod == 0) paceToWallClock();
   const bool monitorTick = tick % monitorPeriod == 0;
   const bool topologyTick = tick % topologyPeriod == 0;
-  bool needState = monitorTick || topologyTick || tick % controlPeriod == 0 || commandDue();
+  bool needState = monitorTick || topologyTick || tick % controlPeriod == 0 || commandDue() ||
+                   (features && tick % featurePeriod == 0);
   if (recorder) needState = needState || recorder->groundTruthDue(tick);
   for (const auto& unit : units) {
     needState = needState || tick % unit.decisionPeriod == 0;
@@ -452,6 +471,10 @@ bool Mission::Impl::stepOnce() {
   if (monitorTick) monitor();
   if (topologyTick) updateTopology();
   sweepLidars();
+  if (features && tick % featurePeriod == 0)
+    for (size_t i = 0; i < units.size(); ++i)
+      if (units[i].role == agent::Role::Explorer && units[i].alive())
+        features->detect(i, now(), units[i].state(), *caster);
   for (size_t i = 0; i < units.size(); ++i) {
     auto& unit = units[i];
     if (!unit.vehicle || tick < unit.nextCapture) continue;
@@ -470,7 +493,10 @@ bool Mission::Impl::stepOnce() {
 
   // The end: the budget on the mission clock is used up (motors stop), or nobody took off.
   const double t = now();
-  if (started && t - startTime >= budget - 1e-9) {
+  if (allCollected && config.features.endWhenCollected) {
+    ended = true;
+    event("mission-end", "", "all features collected");
+  } else if (started && t - startTime >= budget - 1e-9) {
     ended = true;
     event("mission-end", "", "budget used");
   } else if (!started && t >= config.startTimeout) {

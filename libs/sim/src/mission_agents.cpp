@@ -68,6 +68,7 @@ agent::AgentView Mission::Impl::observe(size_t i) {
   unit.pendingCaptures.clear();
   view.detectedCount = unit.log.detectedCount();
   view.ownScore = unit.ownScore;
+  if (features) features->fill(i, view);
   return view;
 }
 
@@ -138,6 +139,7 @@ void Mission::Impl::applyCommand(size_t i, const agent::AgentCommand& command) {
     else
       unit.gimbal->commandRates(command.gimbal->pitch, command.gimbal->yaw, t);
   }
+  if (features) unit.badFeatureIds += static_cast<long long>(features->command(i, t, command));
   for (const auto& message : command.messages) {
     if (message.to.empty()) {
       network->broadcast(static_cast<uint32_t>(i), message.topic, message.bytes);

@@ -38,6 +38,41 @@ RunMode parseRunMode(const Config& config, const std::string& text) {
                    "'" + text + "' is not a run mode (lockstep, latency or realtime)");
 }
 
+Objective parseObjective(const Config& config, const std::string& text) {
+  if (text == "points") return Objective::Points;
+  if (text == "features") return Objective::Features;
+  throw InputError(config.source(), "[mission] objective",
+                   "'" + text + "' is not an objective (points or features)");
+}
+
+double angleDegrees(const Config& config, const std::string& key, double fallbackRadians) {
+  const double degrees = config.getDouble("features", key, fallbackRadians * 180.0 / M_PI);
+  if (!(degrees > 0.0 && degrees <= 180.0))
+    throw InputError(config.source(), "[features] " + key, "must be in (0, 180] degrees");
+  return degrees * M_PI / 180.0;
+}
+
+FeatureConfig readFeatures(const Config& config) {
+  const std::string f = "features";
+  FeatureConfig out;
+  out.sensor.range =
+      positive(config, f, "detect_range", config.getDouble(f, "detect_range", out.sensor.range));
+  out.sensor.halfYaw = angleDegrees(config, "detect_half_yaw", out.sensor.halfYaw);
+  out.sensor.halfElevation =
+      angleDegrees(config, "detect_half_elevation", out.sensor.halfElevation);
+  out.inspectTime = config.getDouble(f, "inspect_time", out.inspectTime);
+  if (!(out.inspectTime >= 0.0) || !std::isfinite(out.inspectTime))
+    throw InputError(config.source(), "[features] inspect_time", "must be a finite time >= 0 s");
+  out.inspectScore = config.getDouble(f, "inspect_score", out.inspectScore);
+  if (!(out.inspectScore > 0.0 && out.inspectScore <= 1.0))
+    throw InputError(config.source(), "[features] inspect_score", "must be in (0, 1]");
+  out.meetingGap = config.getDouble(f, "meeting_gap", out.meetingGap);
+  if (!(out.meetingGap >= 0.0) || !std::isfinite(out.meetingGap))
+    throw InputError(config.source(), "[features] meeting_gap", "must be a finite time >= 0 s");
+  out.endWhenCollected = config.getBool(f, "end_when_collected", out.endWhenCollected);
+  return out;
+}
+
 }  // namespace
 
 std::string toString(RunMode mode) {
@@ -105,6 +140,12 @@ MissionConfig MissionConfig::read(const Config& config, std::optional<uint64_t> 
     out.realtimeFactor =
         positive(config, m, "realtime_factor", config.getDouble(m, "realtime_factor"));
   }
+  out.objective = parseObjective(config, config.getString(m, "objective", "points"));
+  if (out.objective == Objective::Features)
+    out.features = readFeatures(config);
+  else if (config.hasSection("features"))
+    throw InputError(config.source(), "[features]",
+                     "only allowed with [mission] objective = features");
   out.strategy = config.getString("strategy", "name");
   out.record = RecordConfig::read(config, out.physicsStep);
 

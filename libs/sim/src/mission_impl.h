@@ -21,6 +21,7 @@
 #include "coinspect/vehicle/multirotor.h"
 #include "coinspect/world/ray_caster.h"
 #include "explorer_lidar.h"
+#include "mission_features.h"
 #include "mission_recorder.h"
 
 namespace coinspect::sim {
@@ -52,6 +53,7 @@ struct UnitRuntime {
   double distanceFlown = 0.0;  // driven, for a ground station
   world::Vec3 lastPosition = world::Vec3::Zero();
   size_t captures = 0;
+  long long badFeatureIds = 0;  // assignments naming no feature (counted as rejected commands)
   // Gathered between two decisions.
   std::vector<agent::CaptureReport> pendingCaptures;
   std::vector<agent::KeyFrameView> pendingOwnKeyFrames;
@@ -81,6 +83,7 @@ struct Mission::Impl {
   long long monitorPeriod = 4;    // ticks, collisions and the clock rule (100 Hz)
   long long topologyPeriod = 8;   // ticks, 50 Hz
   std::optional<size_t> station;  // index of the ground station
+  long long featurePeriod = 40;   // ticks, explorers' feature detector (10 Hz)
 
   // State.
   std::vector<UnitRuntime> units;
@@ -89,6 +92,8 @@ struct Mission::Impl {
   comms::LinkMatrix links;
   std::unique_ptr<comms::Network> network;
   std::unique_ptr<comms::KeyFrameExchange> exchange;
+  std::unique_ptr<FeatureTracker> features;        // objective = features only
+  bool allCollected = false;                       // the station holds every feature
   std::vector<size_t> faultUnits;                  // per fault
   std::vector<std::vector<size_t>> blackoutUnits;  // per blackout (empty: all links)
   std::vector<size_t> faultsApplied;               // 0/1 per fault

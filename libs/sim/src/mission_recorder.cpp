@@ -38,6 +38,10 @@ record::MissionEventKind eventKind(const std::string& kind) {
   if (kind == "blackout-start") return K::BlackoutStart;
   if (kind == "blackout-end") return K::BlackoutEnd;
   if (kind == "recording-failed") return K::RecordingFailed;
+  if (kind == "feature-detected") return K::FeatureDetected;
+  if (kind == "feature-inspected") return K::FeatureInspected;
+  if (kind == "feature-collected") return K::FeatureCollected;
+  if (kind == "meeting") return K::Meeting;
   COINSPECT_ASSERT(!"a mission event kind without a rawlog kind");
   return K::Failure;
 }

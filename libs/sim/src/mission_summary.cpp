@@ -40,7 +40,8 @@ MissionSummary Mission::summary() const {
     u.detected = unit.log.detectedCount();
     u.ownScore = unit.ownScore;
     u.rejectedCommands =
-        unit.vehicle ? unit.vehicle->rejectedCommands() : unit.ground->rejectedCommands();
+        (unit.vehicle ? unit.vehicle->rejectedCommands() : unit.ground->rejectedCommands()) +
+        unit.badFeatureIds;
     out.rejectedCommands += u.rejectedCommands;
     out.deaths += u.alive ? 0 : 1;
     out.units.push_back(u);
@@ -62,6 +63,8 @@ MissionSummary Mission::summary() const {
   out.runMode = toString(impl.config.runMode);
   out.requestedRealtimeFactor = impl.config.realtimeFactor;
   out.decisionTimes = impl.decisionTimes;
+  if (impl.features)
+    out.features = impl.features->summary(impl.now(), impl.started ? impl.startTime : impl.now());
   return out;
 }
 
@@ -89,6 +92,17 @@ std::string formatSummary(const MissionSummary& s) {
   add("detected    %zu / %zu interest points (%.1f %%)\n", s.detected, s.totalPoints,
       s.totalPoints ? 100.0 * s.detected / s.totalPoints : 0.0);
   add("collisions  %zu (deaths %zu)\n", s.collisions, s.deaths);
+  if (s.features.enabled) {
+    const auto& f = s.features;
+    add("features    %zu: discovered %zu, assigned %zu, inspected %zu, collected %zu "
+        "(finish rate %.1f %%)%s\n",
+        f.total, f.discovered, f.assigned, f.inspected, f.collected, 100.0 * f.finishRate(),
+        f.finishTime ? (", all collected at " + fixed(*f.finishTime, 2) + " s").c_str() : "");
+    add("meetings    gcs-explorer %llu, explorer-inspector %llu, other %llu\n",
+        static_cast<unsigned long long>(f.meetingsGcsExplorer),
+        static_cast<unsigned long long>(f.meetingsExplorerInspector),
+        static_cast<unsigned long long>(f.meetingsOther));
+  }
   double distance = 0.0;
   for (const auto& u : s.units)
     if (u.role != "gcs") distance += u.distanceFlown;  // a ground station drives

@@ -33,6 +33,12 @@ struct AgentView {
   std::vector<CaptureReport> captures;          // own captures since the last decision
   size_t detectedCount = 0;                     // points in the unit's own log
   double ownScore = 0.0;                        // total of the unit's own log
+
+  // Feature missions ([mission] objective = features, doc/features.md); empty otherwise. Each
+  // list holds what is new since the last decision.
+  std::vector<FeatureView> detectedFeatures;  // explorers: first detections by its own detector
+  std::vector<uint32_t> inspectedFeatures;    // inspections the unit itself completed
+  std::vector<uint32_t> receivedResults;      // inspection results handed over at meetings
 };
 
 }  // namespace coinspect::agent

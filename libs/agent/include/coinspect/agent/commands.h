@@ -36,11 +36,22 @@ struct OutgoingMessage {
   std::vector<uint8_t> bytes;
 };
 
+// What a unit says it is doing (feature missions): the report splits each unit's time by it, as
+// SLEI3D's idle time (travel to meetings + waiting). It does not move anything.
+enum class Activity { Unreported, Exploring, Inspecting, TravellingToMeeting, Waiting, Returning };
+const char* toString(Activity activity);
+inline constexpr int kActivityCount = 6;
+
 struct AgentCommand {
   std::optional<AgentSetpoint> setpoint;  // none: keep the previous one (it expires after 0.1 s)
   std::optional<GimbalCommand> gimbal;
   // The camera fires by itself every TriggerInterval (as in CARIC); a strategy cannot stop it.
   std::vector<OutgoingMessage> messages;
+  // Feature missions, for the report only: the activity from now on (kept until the next one)
+  // and the features this unit has just assigned to an inspector (ids out of range are
+  // rejected and counted like a bad setpoint).
+  std::optional<Activity> activity;
+  std::vector<uint32_t> assignedFeatures;
 };
 
 }  // namespace coinspect::agent

@@ -74,6 +74,16 @@ struct CaptureReport {
   double scoreGained = 0.0;   // increase of the unit's own-log total
 };
 
+// A feature found by the unit's own detector (feature missions, doc/features.md). The index
+// names the feature for every robot (as a tag would); position and normal are what the detector
+// measured, exactly.
+struct FeatureView {
+  uint32_t id = 0;
+  Vec3 position = Vec3::Zero();  // world frame, m
+  Vec3 normal = Vec3::Zero();    // unit, pointing out of the surface
+  double time = 0.0;             // s, simulated, when it was detected
+};
+
 // The unit's own camera, as its owner configured it (the ppcom network file in CARIC).
 struct CameraInfo {
   double horizontalFov = 0.0, verticalFov = 0.0;  // rad

@@ -158,9 +158,14 @@ enum class MissionEventKind : uint8_t {
   BlackoutStart = 6,
   BlackoutEnd = 7,
   RecordingFailed = 8,  // the recorder could not write; the mission was stopped
+  // Feature missions (doc/features.md); detail "feature <index>" or, for a meeting, the other unit.
+  FeatureDetected = 9,    // the first detection of a feature by any explorer
+  FeatureInspected = 10,  // an inspector completed a feature's inspection
+  FeatureCollected = 11,  // the ground station received a feature's inspection result
+  Meeting = 12,           // two units linked again after a gap (unit: the lower fleet index)
 };
 // The last kind this build knows (readers reject larger values).
-inline constexpr MissionEventKind kLastMissionEventKind = MissionEventKind::RecordingFailed;
+inline constexpr MissionEventKind kLastMissionEventKind = MissionEventKind::Meeting;
 const char* toString(MissionEventKind kind);
 
 // A mission event: start, end, no take-off, a unit's collision, failure or death, blackouts.

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,25 @@ struct RunReportTiming {
   double decisionTimeP95 = 0.0;   // s
 };
 
+// Feature missions (doc/features.md); times on the mission clock, s.
+struct RunReportFeatureUnit {
+  std::string name;
+  std::map<std::string, double> activitySeconds;  // activity name -> s
+  double idleSeconds = 0.0;  // travelling to meetings + waiting (SLEI3D's idle time)
+  uint64_t detected = 0, inspected = 0, held = 0;
+};
+
+struct RunReportFeatures {
+  uint64_t total = 0, discovered = 0, assigned = 0, inspected = 0, collected = 0;
+  double finishRate = 0.0;
+  std::optional<double> finishTime;          // all collected; absent: not within the budget
+  std::map<std::string, uint64_t> meetings;  // gcs_explorer, explorer_inspector, other
+  // discovered/assigned/inspected/collected -> the times it happened, ascending (the curves of
+  // features over time: the k-th time is when the count reached k).
+  std::map<std::string, std::vector<double>> timeline;
+  std::vector<RunReportFeatureUnit> units;  // fleet order
+};
+
 struct RunReport {
   // The resolved configuration (overrides applied), section -> key -> value, as written.
   std::string configFile;
@@ -59,7 +79,8 @@ struct RunReport {
   // lockstep, latency (not deterministic) or realtime; the pace asked for in realtime mode.
   std::string runMode = "lockstep";
   double realtimeFactor = 1.0;
-  RunReportTiming timing;  // wall clock: differs between equal runs
+  std::optional<RunReportFeatures> features;  // objective = features only
+  RunReportTiming timing;                     // wall clock: differs between equal runs
 };
 
 // The report as JSON text: keys sorted at every level, two-space indent, numbers printed

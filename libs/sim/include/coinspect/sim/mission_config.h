@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "coinspect/core/config.h"
+#include "coinspect/sensing/feature_detection.h"
 #include "coinspect/sensing/inspection_scorer.h"
 #include "coinspect/sim/record_config.h"
 #include "coinspect/world/scenario.h"
@@ -36,6 +37,20 @@ enum class RunMode {
 };
 std::string toString(RunMode mode);
 
+// What a mission is after: the CARIC score over interest points, or SLEI3D's features (the
+// interest points, detected by explorers, inspected by inspectors, collected by the ground
+// station through meetings; doc/features.md).
+enum class Objective { Points, Features };
+
+// [features]: only with objective = features.
+struct FeatureConfig {
+  sensing::FeatureSensor sensor;  // explorers' detector
+  double inspectTime = 3.0;       // s of consecutive captures that count a feature
+  double inspectScore = 0.2;      // CARIC score a capture needs to count a feature
+  double meetingGap = 2.0;        // s a pair's link must have been down for a new meeting
+  bool endWhenCollected = true;   // the mission ends when the station holds every feature
+};
+
 struct MissionConfig {
   std::string source;    // the INI file, for error messages
   std::string scenario;  // generator name, scenario.ini or CARIC folder (resolved path)
@@ -57,6 +72,8 @@ struct MissionConfig {
   std::string explorerLidar = "vlp16-tilting";  // "none" disables the LiDAR
   RunMode runMode = RunMode::Lockstep;
   double realtimeFactor = 1.0;  // realtime: simulated s per wall s
+  Objective objective = Objective::Points;
+  FeatureConfig features;  // objective = features
   std::string strategy;
   std::vector<FaultSpec> faults;
   std::vector<BlackoutSpec> blackouts;

@@ -1,9 +1,13 @@
 // What a mission reports when it ends: score, collisions, traffic, timing.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "coinspect/agent/commands.h"
 
 namespace coinspect::sim {
 
@@ -46,6 +50,29 @@ struct DecisionTimes {
   double quantile(double q) const;
 };
 
+// Feature missions (doc/features.md). Times are on the mission clock (s since take-off).
+struct FeatureUnitSummary {
+  // Seconds in each agent::Activity the unit reported, alive and after take-off.
+  std::array<double, agent::kActivityCount> activitySeconds{};
+  size_t detected = 0;   // features its own detector found
+  size_t inspected = 0;  // inspections it completed
+  size_t held = 0;       // inspection results it holds at the end
+};
+
+struct FeatureSummary {
+  bool enabled = false;
+  size_t total = 0;
+  size_t discovered = 0, assigned = 0, inspected = 0, collected = 0;
+  double finishRate() const {
+    return total ? static_cast<double>(collected) / static_cast<double>(total) : 0.0;
+  }
+  std::optional<double> finishTime;  // when the station held every feature
+  uint64_t meetingsGcsExplorer = 0, meetingsExplorerInspector = 0, meetingsOther = 0;
+  // Per feature, when it was first discovered, assigned, inspected, collected (NaN: never).
+  std::vector<double> discoveredAt, assignedAt, inspectedAt, collectedAt;
+  std::vector<FeatureUnitSummary> units;  // fleet order
+};
+
 struct MissionSummary {
   std::string scenario;
   std::string strategy;
@@ -71,6 +98,7 @@ struct MissionSummary {
   std::string runMode = "lockstep";      // lockstep, latency or realtime
   double requestedRealtimeFactor = 1.0;  // realtime: the pace asked for
   DecisionTimes decisionTimes;
+  FeatureSummary features;
 };
 
 // Human-readable summary, one topic per line ("score ...", "collisions ...", ...).

@@ -1,0 +1,194 @@
+#include "mission_features.h"
+
+#include <cmath>
+#include <limits>
+
+namespace coinspect::sim {
+
+namespace {
+
+constexpr double kNever = std::numeric_limits<double>::quiet_NaN();
+
+std::string featureDetail(uint32_t feature) {
+  return "feature " + std::to_string(feature);
+}
+
+bool isInspector(agent::Role role) {
+  return role == agent::Role::Photographer;
+}
+
+}  // namespace
+
+FeatureTracker::FeatureTracker(const FeatureConfig& config, const world::InterestPointSet& features,
+                               std::vector<std::string> names, std::vector<agent::Role> roles,
+                               std::optional<size_t> station, EventSink sink)
+    : config_(config),
+      features_(features),
+      names_(std::move(names)),
+      roles_(std::move(roles)),
+      station_(station),
+      sink_(std::move(sink)),
+      carried_(names_.size(), features.size()),
+      meetings_(names_.size(), config.meetingGap),
+      knownByUnit_(names_.size()),
+      discoveredAt_(features.size(), kNever),
+      assignedAt_(features.size(), kNever),
+      inspectedAt_(features.size(), kNever),
+      collectedAt_(features.size(), kNever),
+      pendingDetections_(names_.size()),
+      pendingInspected_(names_.size()),
+      pendingReceived_(names_.size()),
+      detectedCount_(names_.size(), 0),
+      inspectedCount_(names_.size(), 0),
+      activity_(names_.size(), agent::Activity::Unreported),
+      activitySince_(names_.size(), 0.0),
+      counting_(names_.size(), 0),
+      activitySeconds_(names_.size()) {
+  for (size_t i = 0; i < names_.size(); ++i) {
+    // Only inspectors keep a timer; the others get an empty one (no feature to index).
+    timers_.emplace_back(isInspector(roles_[i]) ? features.size() : 0, config.inspectTime);
+    if (roles_[i] == agent::Role::Explorer) knownByUnit_[i].assign(features.size(), 0);
+  }
+}
+
+void FeatureTracker::start(double time) {
+  for (size_t i = 0; i < names_.size(); ++i) {
+    counting_[i] = 1;
+    activitySince_[i] = time;
+  }
+}
+
+void FeatureTracker::addActivityTime(size_t unit, double time) {
+  if (!counting_[unit]) return;
+  activitySeconds_[unit][static_cast<size_t>(activity_[unit])] += time - activitySince_[unit];
+  activitySince_[unit] = time;
+}
+
+void FeatureTracker::detect(size_t unit, double time, const vehicle::VehicleState& state,
+                            const world::RayCaster& caster) {
+  sensing::detectFeatures(config_.sensor, state.position, state.yaw, features_, caster, found_);
+  auto& known = knownByUnit_[unit];
+  for (const uint32_t f : found_) {
+    if (known[f]) continue;
+    known[f] = 1;
+    ++detectedCount_[unit];
+    pendingDetections_[unit].push_back({f, features_[f].position, features_[f].normal, time});
+    if (std::isnan(discoveredAt_[f])) {
+      discoveredAt_[f] = time;
+      sink_("feature-detected", names_[unit], featureDetail(f));
+    }
+  }
+}
+
+void FeatureTracker::capture(size_t unit, double time,
+                             const std::vector<sensing::PointScore>& scores) {
+  if (!isInspector(roles_[unit])) return;
+  counted_.clear();
+  for (const auto& s : scores)
+    if (s.seen && s.score >= config_.inspectScore) counted_.push_back(s.index);
+  completed_.clear();
+  timers_[unit].capture(time, counted_, completed_);
+  for (const uint32_t f : completed_) {
+    ++inspectedCount_[unit];
+    pendingInspected_[unit].push_back(f);
+    carried_.add(static_cast<uint32_t>(unit), f);
+    if (std::isnan(inspectedAt_[f])) inspectedAt_[f] = time;
+    sink_("feature-inspected", names_[unit], featureDetail(f));
+  }
+}
+
+bool FeatureTracker::exchange(double time, const comms::LinkMatrix& links,
+                              const std::vector<bool>& alive) {
+  for (const auto& [a, b] : meetings_.update(time, links)) {
+    if (!alive[a] || !alive[b]) continue;
+    const auto ra = roles_[a], rb = roles_[b];
+    const auto pair = [&](agent::Role x, agent::Role y) {
+      return (ra == x && rb == y) || (ra == y && rb == x);
+    };
+    if (pair(agent::Role::GroundStation, agent::Role::Explorer))
+      ++meetingsGcsExplorer_;
+    else if (pair(agent::Role::Explorer, agent::Role::Photographer))
+      ++meetingsExplorerInspector_;
+    else
+      ++meetingsOther_;
+    sink_("meeting", names_[a], names_[b]);
+  }
+  for (const auto& handover : carried_.exchange(links, alive)) {
+    pendingReceived_[handover.unit].push_back(handover.item);
+    if (!station_ || handover.unit != *station_) continue;
+    collectedAt_[handover.item] = time;
+    sink_("feature-collected", names_[handover.unit], featureDetail(handover.item));
+  }
+  if (finishedAt_ || !station_ ||
+      carried_.heldCount(static_cast<uint32_t>(*station_)) < features_.size())
+    return false;
+  finishedAt_ = time;
+  return true;
+}
+
+void FeatureTracker::unitDied(size_t unit, double time) {
+  addActivityTime(unit, time);
+  counting_[unit] = 0;
+  carried_.drop(static_cast<uint32_t>(unit));
+}
+
+size_t FeatureTracker::command(size_t unit, double time, const agent::AgentCommand& command) {
+  if (command.activity && *command.activity != activity_[unit]) {
+    addActivityTime(unit, time);
+    activity_[unit] = *command.activity;
+  }
+  size_t bad = 0;
+  for (const uint32_t f : command.assignedFeatures) {
+    if (f >= features_.size()) {
+      ++bad;
+      continue;
+    }
+    if (std::isnan(assignedAt_[f])) assignedAt_[f] = time;
+  }
+  return bad;
+}
+
+void FeatureTracker::fill(size_t unit, agent::AgentView& view) {
+  view.detectedFeatures = std::move(pendingDetections_[unit]);
+  pendingDetections_[unit].clear();
+  view.inspectedFeatures = std::move(pendingInspected_[unit]);
+  pendingInspected_[unit].clear();
+  view.receivedResults = std::move(pendingReceived_[unit]);
+  pendingReceived_[unit].clear();
+}
+
+FeatureSummary FeatureTracker::summary(double now, double startTime) const {
+  FeatureSummary out;
+  out.enabled = true;
+  out.total = features_.size();
+  const auto onClock = [startTime](const std::vector<double>& at, size_t& count) {
+    std::vector<double> times(at.size(), kNever);
+    for (size_t f = 0; f < at.size(); ++f) {
+      if (std::isnan(at[f])) continue;
+      times[f] = std::max(0.0, at[f] - startTime);
+      ++count;
+    }
+    return times;
+  };
+  out.discoveredAt = onClock(discoveredAt_, out.discovered);
+  out.assignedAt = onClock(assignedAt_, out.assigned);
+  out.inspectedAt = onClock(inspectedAt_, out.inspected);
+  out.collectedAt = onClock(collectedAt_, out.collected);
+  if (finishedAt_) out.finishTime = std::max(0.0, *finishedAt_ - startTime);
+  out.meetingsGcsExplorer = meetingsGcsExplorer_;
+  out.meetingsExplorerInspector = meetingsExplorerInspector_;
+  out.meetingsOther = meetingsOther_;
+  for (size_t i = 0; i < names_.size(); ++i) {
+    FeatureUnitSummary u;
+    u.activitySeconds = activitySeconds_[i];
+    if (counting_[i])
+      u.activitySeconds[static_cast<size_t>(activity_[i])] += now - activitySince_[i];
+    u.detected = detectedCount_[i];
+    u.inspected = inspectedCount_[i];
+    u.held = carried_.heldCount(static_cast<uint32_t>(i));
+    out.units.push_back(u);
+  }
+  return out;
+}
+
+}  // namespace coinspect::sim

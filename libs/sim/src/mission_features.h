@@ -1,0 +1,78 @@
+// The feature side of a mission with objective = features (doc/features.md): explorers' detections,
+// inspectors' inspection timers, the results the robots carry and hand over at meetings, what the
+// ground station has collected, meetings, and the activity each unit reports.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "coinspect/agent/agent_view.h"
+#include "coinspect/agent/commands.h"
+#include "coinspect/comms/carried_data.h"
+#include "coinspect/sensing/feature_detection.h"
+#include "coinspect/sensing/inspection_scorer.h"
+#include "coinspect/sim/mission_config.h"
+#include "coinspect/sim/mission_summary.h"
+#include "coinspect/vehicle/vehicle_state.h"
+
+namespace coinspect::sim {
+
+class FeatureTracker {
+ public:
+  // kind, unit, detail (a mission event).
+  using EventSink = std::function<void(const std::string&, const std::string&, const std::string&)>;
+
+  FeatureTracker(const FeatureConfig& config, const world::InterestPointSet& features,
+                 std::vector<std::string> names, std::vector<agent::Role> roles,
+                 std::optional<size_t> station, EventSink sink);
+
+  // The mission clock starts: activity time counts from here.
+  void start(double time);
+  // An explorer's detector at its current pose.
+  void detect(size_t unit, double time, const vehicle::VehicleState& state,
+              const world::RayCaster& caster);
+  // An inspector's capture (scores of the points in its candidate radius).
+  void capture(size_t unit, double time, const std::vector<sensing::PointScore>& scores);
+  // A topology update: meetings, then one store-and-forward hop. True when the station now holds
+  // every feature (the first time only).
+  bool exchange(double time, const comms::LinkMatrix& links, const std::vector<bool>& alive);
+  // A dead unit's results are lost and its activity stops counting.
+  void unitDied(size_t unit, double time);
+  // The unit's command: activity and assignments. Returns the number of bad feature ids.
+  size_t command(size_t unit, double time, const agent::AgentCommand& command);
+  // Moves what is new for `unit` into its view.
+  void fill(size_t unit, agent::AgentView& view);
+
+  FeatureSummary summary(double now, double startTime) const;
+
+ private:
+  void addActivityTime(size_t unit, double time);
+
+  FeatureConfig config_;
+  const world::InterestPointSet& features_;
+  std::vector<std::string> names_;
+  std::vector<agent::Role> roles_;
+  std::optional<size_t> station_;
+  EventSink sink_;
+  comms::CarriedData carried_;
+  comms::MeetingCounter meetings_;
+  std::vector<sensing::InspectionTimer> timers_;   // per unit (used for inspectors only)
+  std::vector<std::vector<uint8_t>> knownByUnit_;  // per explorer: features it has detected
+  std::vector<double> discoveredAt_, assignedAt_, inspectedAt_, collectedAt_;  // sim time
+  std::optional<double> finishedAt_;
+  uint64_t meetingsGcsExplorer_ = 0, meetingsExplorerInspector_ = 0, meetingsOther_ = 0;
+  // Per unit.
+  std::vector<std::vector<agent::FeatureView>> pendingDetections_;
+  std::vector<std::vector<uint32_t>> pendingInspected_, pendingReceived_;
+  std::vector<size_t> detectedCount_, inspectedCount_;
+  std::vector<agent::Activity> activity_;
+  std::vector<double> activitySince_;
+  std::vector<uint8_t> counting_;  // alive and the mission clock runs
+  std::vector<std::array<double, agent::kActivityCount>> activitySeconds_;
+  // Buffers.
+  std::vector<uint32_t> found_, counted_, completed_;
+};
+
+}  // namespace coinspect::sim

@@ -1,0 +1,225 @@
+// Feature missions (objective = features): detection, inspection, store and forward, collection,
+// meetings and reported activities, with a scripted strategy on a wall with three features.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "coinspect/sim/mission.h"
+#include "coinspect/testing/input_errors.h"
+#include "sim_scenes.h"
+
+namespace coinspect::sim {
+namespace {
+
+// The wall of sim_scenes.h (face x = 10) with three features at 4 m height, y = -1, 0, 1; the
+// station at (0, 0, 1), explorer "e" at (0, -3), inspector "i" at (0, 3).
+world::Scenario featureScene() {
+  world::Scenario scenario;
+  scenario.name = "feature-wall";
+  scenario.meshes.push_back(testing::boxMesh({10, -5, 0}, {11, 5, 10}));
+  std::vector<world::InterestPoint> points;
+  for (int y = -1; y <= 1; ++y) {
+    world::InterestPoint p;
+    p.position = world::Vec3(10.0, y, 4.0);
+    p.normal = world::Vec3(-1, 0, 0);
+    points.push_back(p);
+  }
+  scenario.interestPoints = world::InterestPointSet(points);
+  world::OrientedBox box;
+  box.name = "face";
+  box.center = world::Vec3(10, 0, 4);
+  box.size = world::Vec3(1, 4, 2);
+  scenario.boxes.push_back(box);
+  const auto unit = [](const char* name, world::UnitRole role, const world::Vec3& at) {
+    world::UnitSpec spec;
+    spec.name = name;
+    spec.role = role;
+    spec.startPosition = at;
+    return spec;
+  };
+  scenario.fleet = {unit("gcs", world::UnitRole::GroundStation, {0, 0, 1}),
+                    unit("e", world::UnitRole::Explorer, {0, -3, 0}),
+                    unit("i", world::UnitRole::Photographer, {0, 3, 0})};
+  scenario.missionBudget = 40.0;
+  return scenario;
+}
+
+// What every unit saw of features, by unit name.
+struct Seen {
+  std::map<std::string, std::vector<agent::FeatureView>> detected;
+  std::map<std::string, std::vector<uint32_t>> inspected, received;
+};
+
+// The explorer hovers at (6.5, -2, 4) facing the wall; the inspector hovers 5 m from it, camera
+// level, until `leaveAt`, then turns away and flies back next to the station. The station does not
+// move.
+class Scripted final : public agent::Strategy {
+ public:
+  Scripted(std::string name, double leaveAt, Seen& seen)
+      : name_(std::move(name)), leaveAt_(leaveAt), seen_(seen) {}
+  agent::AgentCommand decide(const agent::AgentView& view) override {
+    auto& detected = seen_.detected[name_];
+    detected.insert(detected.end(), view.detectedFeatures.begin(), view.detectedFeatures.end());
+    auto& inspected = seen_.inspected[name_];
+    inspected.insert(inspected.end(), view.inspectedFeatures.begin(), view.inspectedFeatures.end());
+    auto& received = seen_.received[name_];
+    received.insert(received.end(), view.receivedResults.begin(), view.receivedResults.end());
+    agent::AgentCommand command;
+    if (name_ == "gcs") return command;
+    agent::AgentSetpoint setpoint;
+    command.gimbal = agent::GimbalCommand::angles(0.0, 0.0);
+    if (name_ == "e") {
+      setpoint.position = agent::Vec3(6.5, -2, 4);
+      command.activity = agent::Activity::Exploring;
+      command.assignedFeatures = view.detectedFeatures.empty()
+                                     ? std::vector<uint32_t>{}
+                                     : std::vector<uint32_t>{view.detectedFeatures[0].id};
+    } else if (view.time < leaveAt_) {
+      setpoint.position = agent::Vec3(5, 0, 4);
+      command.activity = agent::Activity::Inspecting;
+    } else {
+      setpoint.position = agent::Vec3(1.5, 0, 2);
+      setpoint.yaw = M_PI;  // turned away from the wall
+      command.activity = agent::Activity::TravellingToMeeting;
+    }
+    command.setpoint = setpoint;
+    return command;
+  }
+
+ private:
+  std::string name_;
+  double leaveAt_;
+  Seen& seen_;
+};
+
+agent::StrategyRegistry scripted(double leaveAt, Seen& seen) {
+  agent::StrategyRegistry registry;
+  registry.registerStrategy("scripted", [leaveAt, &seen](const agent::StrategyContext& context) {
+    return std::make_unique<Scripted>(context.unitName, leaveAt, seen);
+  });
+  return registry;
+}
+
+const std::string kFeatureMission =
+    "[mission]\nexplorer_lidar = none\nlinks = range\nlink_range = 5\nobjective = features\n"
+    "[strategy]\nname = scripted\n";
+
+bool hasEvent(const Mission& mission, const std::string& kind, const std::string& detail) {
+  const auto& events = mission.events();
+  return std::any_of(events.begin(), events.end(),
+                     [&](const MissionEvent& e) { return e.kind == kind && e.detail == detail; });
+}
+
+TEST(FeatureMission, DetectedInspectedCarriedAndCollectedThenTheMissionEnds) {
+  Seen seen;
+  const auto registry = scripted(12.0, seen);
+  const auto config = Config::fromText(kFeatureMission, "features.ini");
+  Mission mission(featureScene(), config, registry);
+  config.requireAllKeysUsed();
+  mission.run();
+  const auto summary = mission.summary();
+  const auto& f = summary.features;
+  ASSERT_TRUE(f.enabled);
+  EXPECT_EQ(f.total, 3u);
+  EXPECT_EQ(f.discovered, 3u);
+  EXPECT_EQ(f.inspected, 3u);
+  EXPECT_EQ(f.collected, 3u);
+  EXPECT_DOUBLE_EQ(f.finishRate(), 1.0);
+  EXPECT_EQ(f.assigned, 3u);
+  // The results reach the station only once the inspector is back in range (after 12 s), and
+  // the mission stops there, well before its 40 s budget.
+  ASSERT_TRUE(f.finishTime);
+  EXPECT_GT(*f.finishTime, 12.0);
+  EXPECT_LT(*f.finishTime, 20.0);
+  EXPECT_NEAR(summary.missionTime, *f.finishTime, 0.05);
+  EXPECT_TRUE(hasEvent(mission, "mission-end", "all features collected"));
+  for (size_t k = 0; k < 3; ++k) {
+    // An inspection takes 3 s of keeping the feature in view: not before the 3rd second.
+    EXPECT_GE(f.inspectedAt[k], 3.0);
+    EXPECT_LT(f.inspectedAt[k], 12.0);
+    EXPECT_GE(f.collectedAt[k], 12.0);
+    EXPECT_LE(f.discoveredAt[k], f.inspectedAt[k]);
+    EXPECT_TRUE(hasEvent(mission, "feature-collected", "feature " + std::to_string(k)));
+  }
+  // What the robots were told: the explorer its detections (with the features' true poses), the
+  // inspector its inspections. (The mission ended before the station's next decision.)
+  ASSERT_EQ(seen.detected["e"].size(), 3u);
+  for (const auto& d : seen.detected["e"]) {
+    EXPECT_NEAR(d.position.x(), 10.0, 1e-6);
+    EXPECT_NEAR(d.normal.x(), -1.0, 1e-6);
+  }
+  EXPECT_TRUE(seen.detected["i"].empty());  // inspectors have no detector
+  auto inspected = seen.inspected["i"];
+  std::sort(inspected.begin(), inspected.end());
+  EXPECT_EQ(inspected, (std::vector<uint32_t>{0, 1, 2}));
+  EXPECT_EQ(f.units[mission.unitIndex("gcs")].held, 3u);
+  // The explorer met the inspector out at the wall and carries the results too.
+  EXPECT_EQ(seen.received["e"].size(), 3u);
+  EXPECT_EQ(f.meetingsExplorerInspector, 1u);
+  EXPECT_EQ(f.meetingsGcsExplorer, 0u);
+  EXPECT_EQ(f.meetingsOther, 1u);  // the inspector back at the station
+  const size_t i = mission.unitIndex("i");
+  EXPECT_EQ(f.units[i].inspected, 3u);
+  EXPECT_EQ(f.units[mission.unitIndex("e")].detected, 3u);
+  EXPECT_EQ(f.units[mission.unitIndex("e")].held, 3u);
+  // The inspector said "inspecting" until 12 s of simulated time, then "travelling".
+  const auto& seconds = f.units[i].activitySeconds;
+  EXPECT_NEAR(seconds[static_cast<size_t>(agent::Activity::Inspecting)], 12.0 - summary.startTime,
+              0.15);
+  EXPECT_NEAR(seconds[static_cast<size_t>(agent::Activity::TravellingToMeeting)],
+              *f.finishTime - (12.0 - summary.startTime), 0.15);
+}
+
+TEST(FeatureMission, WithoutAMeetingNothingIsCollectedAndTheBudgetEndsIt) {
+  Seen seen;
+  const auto registry = scripted(1e9, seen);  // the inspector never comes back
+  const auto config = Config::fromText(kFeatureMission, "features.ini");
+  Mission mission(featureScene(), config, registry);
+  mission.run();
+  const auto f = mission.summary().features;
+  EXPECT_EQ(f.inspected, 3u);
+  EXPECT_EQ(f.collected, 0u);
+  EXPECT_DOUBLE_EQ(f.finishRate(), 0.0);
+  EXPECT_FALSE(f.finishTime);
+  EXPECT_TRUE(hasEvent(mission, "mission-end", "budget used"));
+  EXPECT_EQ(f.units[mission.unitIndex("i")].held, 3u);
+  EXPECT_TRUE(std::isnan(f.collectedAt[0]));
+}
+
+TEST(FeatureMission, AnInspectionNeedsTheWholeInspectTimeInView) {
+  Seen seen;
+  const auto registry = scripted(12.0, seen);
+  // The inspector is in view for less than 12 s: a 15 s inspection never completes.
+  const auto config =
+      Config::fromText(kFeatureMission + "[features]\ninspect_time = 15\n", "features.ini");
+  Mission mission(featureScene(), config, registry);
+  mission.run();
+  const auto f = mission.summary().features;
+  EXPECT_EQ(f.discovered, 3u);
+  EXPECT_EQ(f.inspected, 0u);
+  EXPECT_EQ(f.collected, 0u);
+}
+
+TEST(FeatureMission, BadFeatureKeysAreErrorsNamingTheKey) {
+  Seen seen;
+  const auto registry = scripted(12.0, seen);
+  const auto expectError = [&](const std::string& text, const std::string& key) {
+    const auto config = Config::fromText(text, "bad.ini");
+    const auto message =
+        coinspect::testing::messageOf([&] { Mission(featureScene(), config, registry); });
+    EXPECT_MENTIONS(message, "bad.ini");
+    EXPECT_MENTIONS(message, key);
+  };
+  expectError(kFeatureMission + "[features]\ninspect_score = 0\n", "inspect_score");
+  expectError(kFeatureMission + "[features]\ndetect_half_yaw = 200\n", "detect_half_yaw");
+  expectError(kFeatureMission + "[features]\ndetect_range = -1\n", "detect_range");
+  expectError(kFeatureMission + "[features]\nmeeting_gap = nan\n", "meeting_gap");
+  expectError("[mission]\nobjective = score\n[strategy]\nname = scripted\n", "objective");
+  expectError("[mission]\n[features]\ninspect_time = 2\n[strategy]\nname = scripted\n",
+              "[features]");
+}
+
+}  // namespace
+}  // namespace coinspect::sim
