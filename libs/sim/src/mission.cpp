@@ -226,13 +226,22 @@ void Mission::Impl::syncVehicles() {
     if (unit.vehicle)
       unit.vehicle->advance(dt);
     else
-      unit.ground->advance(dt);
+      advanceStation(unit, dt);
     const auto& p = unit.state().position;
     if (wasAlive) unit.distanceFlown += (p - unit.lastPosition).norm();
     unit.lastPosition = p;
   }
   syncedTo = t;
   stages.physics += secondsSince(stageStart);
+}
+
+// A ground station drives straight and cannot pass through structures: a move whose segment
+// crosses a mesh surface (walls, not the ground) leaves it where it was, at rest.
+void Mission::Impl::advanceStation(UnitRuntime& unit, double dt) {
+  const world::Vec3 before = unit.ground->state().position;
+  unit.ground->advance(dt);
+  const world::Vec3& after = unit.ground->state().position;
+  if (after != before && !caster->segmentClear(before, after, 0.0)) unit.ground->stopAt(before);
 }
 
 void Mission::Impl::applyFaultsAndBlackouts() {

@@ -133,6 +133,7 @@ struct Mission::Impl {
 
   bool stepOnce();
   void syncVehicles();
+  void advanceStation(UnitRuntime& unit, double dt);
   void applyFaultsAndBlackouts();
   void monitor();
   void updateTopology();

@@ -60,6 +60,24 @@ TEST(MissionGroundStation, DrivesToItsWaypointAtGcsSpeed) {
   EXPECT_NEAR((mission.unitState(gcs).position - waypoint).norm(), 0.0, 1e-9);
 }
 
+TEST(MissionGroundStation, StopsAtAWallInsteadOfDrivingThroughIt) {
+  // The wall occupies 10 <= x <= 11; the gcs (0.5 m up, clear of the ground plane) is sent to
+  // x = 20 straight through it.
+  const auto config = Config::fromText(
+      "[mission]\nexplorer_lidar = none\ngcs_speed = 1\n[strategy]\nname = demo-paths\n"
+      "[demo-paths.gcs]\nwaypoints = 20 0 0.5\n",
+      "gcs.ini");
+  const auto registry = builtins();
+  auto scenario = wallScenario({});
+  scenario.fleet.at(0).startPosition = world::Vec3(0, 0, 0.5);
+  Mission mission(std::move(scenario), config, registry);
+  mission.runUntil(15.0);
+  const auto state = mission.unitState(mission.unitIndex("gcs"));
+  EXPECT_LT(state.position.x(), 10.0);
+  EXPECT_GT(state.position.x(), 9.9);  // it got there (1 m/s for 15 s) and no further
+  EXPECT_EQ(state.velocity, world::Vec3::Zero());
+}
+
 TEST(MissionGroundStation, StaticByDefault) {
   const auto config =
       Config::fromText(kMission + "[demo-paths.gcs]\nwaypoints = -10 0 0\n", "gcs.ini");

@@ -49,4 +49,12 @@ void GroundVehicle::advance(double dt) {
   state_.yaw = std::atan2(toTarget.y(), toTarget.x());
 }
 
+void GroundVehicle::stopAt(const Vec3& position) {
+  COINSPECT_ASSERT(position.allFinite());
+  state_.position = position;
+  state_.velocity.setZero();
+  target_ = position;
+  ++obstacleStops_;
+}
+
 }  // namespace coinspect::vehicle

@@ -33,6 +33,21 @@ TEST(GroundVehicle, DrivesAtMostItsSpeedAndStopsOnTheTarget) {
   EXPECT_EQ(gcs.state().velocity, Vec3::Zero());
 }
 
+TEST(GroundVehicle, StopAtPutsItBackAtRestWithoutATarget) {
+  GroundVehicle gcs(Vec3(0, 0, 0.2), 0.0, 1.0);
+  gcs.setTarget(Vec3(10, 0, 0));
+  gcs.advance(1.0);
+  gcs.stopAt(Vec3(0.5, 0, 0.2));
+  EXPECT_EQ(gcs.state().position, Vec3(0.5, 0, 0.2));
+  EXPECT_EQ(gcs.state().velocity, Vec3::Zero());
+  EXPECT_EQ(gcs.obstacleStops(), 1);
+  gcs.advance(1.0);  // no target left: it stays
+  EXPECT_EQ(gcs.state().position, Vec3(0.5, 0, 0.2));
+  gcs.setTarget(Vec3(0.5, 2, 0));  // a new one moves it again
+  gcs.advance(1.0);
+  EXPECT_NEAR(gcs.state().position.y(), 1.0, 1e-12);
+}
+
 TEST(GroundVehicle, RejectsBadInput) {
   EXPECT_THROW(GroundVehicle(Vec3::Zero(), 0.0, -1.0), InputError);
   GroundVehicle gcs(Vec3::Zero(), 0.0, 1.0);
