@@ -4,6 +4,7 @@
 #include "coinspect/strategies/coinspect/coinspect_strategy.h"
 #include "coinspect/strategies/demo_paths.h"
 #include "coinspect/strategies/kios/kios_strategy.h"
+#include "coinspect/strategies/slei/slei3d_strategy.h"
 #include "coinspect/strategies/star/star_strategy.h"
 
 namespace coinspect::strategies {
@@ -14,6 +15,7 @@ void registerBuiltinStrategies(agent::StrategyRegistry& registry) {
   coinspect_strategy::registerCoinspect(registry);
   kios::registerKios(registry);
   star::registerStar(registry);
+  slei::registerSlei3d(registry);
 }
 
 }  // namespace coinspect::strategies

@@ -35,10 +35,26 @@ bool parseUnknownSpace(const std::string& text, UnknownSpace* out) {
   return false;
 }
 
+namespace {
+
+// The mission region, grown to hold every point of `options.include` with the margin's room.
+Aabb regionAround(const std::vector<BoxView>& boxes, const RobotMapOptions& options,
+                  double groundZ) {
+  Aabb region = missionRegion(boxes, options.regionMargin, groundZ);
+  const Vec3 room(2.0, 2.0, 0.0);
+  for (const Vec3& p : options.include) {
+    region.min = region.min.cwiseMin(p - room);
+    region.max = region.max.cwiseMax(p + room);
+  }
+  return region;
+}
+
+}  // namespace
+
 RobotMap::RobotMap(const RobotMapOptions& options, const std::vector<BoxView>& boxes,
                    double groundZ)
     : options_(options),
-      region_(missionRegion(boxes, options.regionMargin, groundZ)),
+      region_(regionAround(boxes, options, groundZ)),
       map_(mapping::OccupancyMapOptions{options.mapResolution, options.maxRange,
                                         options.raysClearOccupied}) {
   COINSPECT_ASSERT(options.gridResolution > 0.0 && options.rebuildPeriod >= 0.0);

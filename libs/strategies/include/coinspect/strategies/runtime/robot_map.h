@@ -46,6 +46,9 @@ struct RobotMapOptions {
   // static; see mapping::OccupancyMapOptions): a thin wing's trailing edge, seen at grazing
   // angles, was erased and a photographer flew into it. Only a robot's body clears such a cell.
   bool raysClearOccupied = false;
+  // Points the region must also hold (2 m around them horizontally), e.g. where the robot
+  // starts: a start outside the boxes' region plus margin could not plan its way in.
+  std::vector<Vec3> include;
 };
 
 // The UAVs a robot knows to be near now: itself and its neighbours in line of sight.

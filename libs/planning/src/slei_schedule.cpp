@@ -1,0 +1,173 @@
+// SLEI3D's completion prediction and GCS meeting corners (see slei_schedule.h).
+#include "coinspect/planning/slei_schedule.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "coinspect/core/error.h"
+
+namespace coinspect::planning {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// `!(value >= 0)` is also true for NaN, which must not slip through as "not negative".
+void requireNonNegative(const char* source, const char* name, double value) {
+  if (!(value >= 0.0) || !std::isfinite(value)) {
+    throw InputError(source, name, std::to_string(value) + " is not a finite value >= 0");
+  }
+}
+
+void validateCompletion(const CompletionInputs& inputs,
+                        const CompletionPredictionOptions& options) {
+  const char* const source = "completion prediction";
+  requireNonNegative(source, "boxVolume", inputs.boxVolume);
+  requireNonNegative(source, "exploredVolume", inputs.exploredVolume);
+  requireNonNegative(source, "featuresScanned", inputs.featuresScanned);
+  requireNonNegative(source, "featuresInspected", inputs.featuresInspected);
+  requireNonNegative(source, "timeInBox", inputs.timeInBox);
+  requireNonNegative(source, "closingTourLength", inputs.closingTourLength);
+  if (!std::isfinite(inputs.now) || !std::isfinite(inputs.earliestInspectorFinish)) {
+    throw InputError(source, "now / earliestInspectorFinish", "must be finite");
+  }
+  requireNonNegative(source, "minRemaining", options.minRemaining);
+  requireNonNegative(source, "maxRemaining", options.maxRemaining);
+  requireNonNegative(source, "uninspectedFallback", options.uninspectedFallback);
+  if (options.minRemaining > options.maxRemaining) {
+    throw InputError(source, "minRemaining",
+                     std::to_string(options.minRemaining) + " is above maxRemaining " +
+                         std::to_string(options.maxRemaining));
+  }
+  if (!(options.explorerSpeed > 0.0) || !std::isfinite(options.explorerSpeed)) {
+    throw InputError(source, "explorerSpeed",
+                     std::to_string(options.explorerSpeed) + " is not a finite speed > 0");
+  }
+}
+
+// The unclamped time of the case that applies, and which case it was.
+CompletionPrediction unclampedCompletion(const CompletionInputs& in,
+                                         const CompletionPredictionOptions& options) {
+  CompletionPrediction prediction;
+  if (in.explorationFinished) {
+    const double firstFree = std::max(in.earliestInspectorFinish, in.now);
+    prediction.unclamped = firstFree + in.closingTourLength / options.explorerSpeed - in.now;
+    prediction.rule = CompletionRule::ClosingTour;
+    return prediction;
+  }
+  if (in.exploredVolume == 0.0) {
+    prediction.unclamped = options.minRemaining;
+    prediction.rule = CompletionRule::NothingExplored;
+    return prediction;
+  }
+  const double scanned = in.featuresScanned;
+  const double predicted = std::floor(scanned * in.boxVolume / in.exploredVolume);
+  const double t = in.timeInBox;
+  if (in.featuresScanned == 0 || scanned >= predicted) {
+    prediction.unclamped = in.boxVolume / in.exploredVolume * t - t;
+    prediction.rule = CompletionRule::VolumeExtrapolation;
+  } else if (in.featuresInspected == 0) {
+    prediction.unclamped = options.uninspectedFallback;
+    prediction.rule = CompletionRule::UninspectedFallback;
+  } else {
+    prediction.unclamped = predicted / in.featuresInspected * t - t;
+    prediction.rule = CompletionRule::InspectionExtrapolation;
+  }
+  return prediction;
+}
+
+double horizontalDistance(const Vec3& a, const Vec3& b) {
+  return (a.head<2>() - b.head<2>()).norm();
+}
+
+}  // namespace
+
+CompletionPrediction predictCompletion(const CompletionInputs& inputs,
+                                       const CompletionPredictionOptions& options) {
+  validateCompletion(inputs, options);
+  CompletionPrediction prediction = unclampedCompletion(inputs, options);
+  prediction.remaining =
+      std::clamp(prediction.unclamped, options.minRemaining, options.maxRemaining);
+  return prediction;
+}
+
+double straightTourLength(const Vec3& start, const std::vector<Vec3>& stops, bool horizontalOnly) {
+  double length = 0.0;
+  Vec3 from = start;
+  for (const Vec3& stop : stops) {
+    length += horizontalOnly ? horizontalDistance(from, stop) : (stop - from).norm();
+    from = stop;
+  }
+  return length;
+}
+
+std::array<Vec3, 4> meetingCorners(const Vec3& boxMin, const Vec3& boxMax,
+                                   const MeetingCornerOptions& options) {
+  const char* const source = "meeting corners";
+  if (!boxMin.allFinite() || !boxMax.allFinite() || !std::isfinite(options.height)) {
+    throw InputError(source, "box", "corners and height must be finite");
+  }
+  if (boxMin.x() > boxMax.x() || boxMin.y() > boxMax.y()) {
+    throw InputError(source, "box", "the minimum corner is above the maximum in x or y");
+  }
+  requireNonNegative(source, "inset", options.inset);
+  // Never move past the middle: a narrow box keeps both corners of that axis on its centre line.
+  const double insetX = std::min(options.inset, 0.5 * (boxMax.x() - boxMin.x()));
+  const double insetY = std::min(options.inset, 0.5 * (boxMax.y() - boxMin.y()));
+  const double x0 = boxMin.x() + insetX, x1 = boxMax.x() - insetX;
+  const double y0 = boxMin.y() + insetY, y1 = boxMax.y() - insetY;
+  const double z = options.height;
+  return {Vec3(x0, y0, z), Vec3(x1, y0, z), Vec3(x1, y1, z), Vec3(x0, y1, z)};
+}
+
+MeetingCornerChoice nearestMeetingCorner(const Vec3& boxMin, const Vec3& boxMax,
+                                         const Vec3& reference,
+                                         const MeetingCornerOptions& options) {
+  const std::array<Vec3, 4> corners = meetingCorners(boxMin, boxMax, options);
+  MeetingCornerChoice choice;
+  double best = kInfinity;
+  for (int i = 0; i < 4; ++i) {
+    const double distance = horizontalDistance(corners[i], reference);
+    if (distance < best) {  // strict: ties keep the first corner
+      best = distance;
+      choice.index = i;
+    }
+  }
+  if (choice.index < 0) choice.index = 0;  // a NaN reference: every distance compares false
+  choice.point = corners[choice.index];
+  return choice;
+}
+
+MeetingCornerChoice bestTimedMeetingCorner(const Vec3& boxMin, const Vec3& boxMax,
+                                           const std::function<double(const Vec3&)>& arrivalTime,
+                                           double plannedTime,
+                                           const MeetingCornerOptions& options) {
+  if (!arrivalTime) {
+    throw InputError("meeting corners", "arrivalTime", "no arrival-time function given");
+  }
+  if (!std::isfinite(plannedTime)) {
+    throw InputError("meeting corners", "plannedTime", "must be finite");
+  }
+  const std::array<Vec3, 4> corners = meetingCorners(boxMin, boxMax, options);
+  MeetingCornerChoice choice;
+  choice.arrival = kInfinity;
+  double bestMismatch = kInfinity;
+  for (int i = 0; i < 4; ++i) {
+    const double arrival = arrivalTime(corners[i]);
+    if (!std::isfinite(arrival)) continue;  // unreachable
+    const double mismatch = std::abs(arrival - plannedTime);
+    const bool better =
+        mismatch < bestMismatch || (mismatch == bestMismatch && arrival < choice.arrival);
+    if (better) {
+      bestMismatch = mismatch;
+      choice.index = i;
+      choice.arrival = arrival;
+      choice.point = corners[i];
+    }
+  }
+  return choice;
+}
+
+}  // namespace coinspect::planning

@@ -1,0 +1,54 @@
+// SLEI3D's ground-station layer as pure functions every robot can evaluate the same way: the
+// fleet split into subgroups (one explorer each), the rolling choice of boxes, and the places
+// where a subgroup meets the station (doc/strategies.md, "SLEI3D").
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "coinspect/agent/observations.h"
+#include "coinspect/strategies/slei/protocol.h"
+
+namespace coinspect::strategies::slei {
+
+// How many inspectors each of `explorers` subgroups gets: evenly (the reference code: the first
+// `inspectors % explorers` get one more), or in proportion to `weights` (the paper: the volume of
+// each subgroup's first box; floor of the share, the remainder one each to the largest
+// fractional parts, ties to the earlier subgroup).
+std::vector<size_t> inspectorsPerSubgroup(size_t inspectors, size_t explorers, bool even,
+                                          const std::vector<double>& weights = {});
+
+// The unassigned box (assigned[i] == 0) whose footprint centre is nearest, horizontally, to
+// `from`; -1 when none is left. Ties go to the lower index.
+int32_t nearestFreeBox(const std::vector<agent::BoxView>& boxes,
+                       const std::vector<uint8_t>& assigned, const Vec3& from);
+
+// Of the four corners of the box's world-aligned bounds moved `offset` m outwards in x and y,
+// at height z, the one nearest (horizontally) to `from` (planning::nearestMeetingCorner). The
+// reference uses corners 1 m inside the box (its robots' maps extend 2 m beyond it); the boxes
+// here hug their structure, so the corners are outside, where the ground station can stand and
+// a UAV can fly before anything is mapped.
+Vec3 boxCorner(const agent::BoxView& box, double offset, double z, const Vec3& from);
+
+// `corner` moved `distance` m horizontally away from the box's footprint centre, at height z:
+// where a UAV waits near a corner without crowding the structure or the station there.
+Vec3 awayFromBox(const agent::BoxView& box, const Vec3& corner, double distance, double z);
+
+struct PlanOptions {
+  bool evenSplit = true;
+  double cornerOffset = 2.0;       // m outside the box's bounds (boxCorner)
+  double stationSpeed = 1.0;       // m/s
+  double firstMeetingLead = 60.0;  // s before the first meetings (the reference: 60)
+  double legBuffer = 20.0;  // s added per leg of the station's first round (the reference: 20)
+};
+
+// The station's first plan, made at `now` from where it stands: explorers in fleet order each
+// take the free box nearest the previous choice (the first: nearest the station), inspectors are
+// split in fleet order; each subgroup's first meeting is at the corner of its box nearest the
+// previous meeting (the station's own position first), at times chained as the station would
+// drive them (straight legs at stationSpeed + legBuffer, after firstMeetingLead).
+FleetPlan makeFleetPlan(const std::vector<agent::FleetMember>& fleet,
+                        const std::vector<agent::BoxView>& boxes, const Vec3& station,
+                        double groundZ, double now, const PlanOptions& options);
+
+}  // namespace coinspect::strategies::slei

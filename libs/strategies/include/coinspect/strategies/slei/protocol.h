@@ -1,0 +1,91 @@
+// The messages of the SLEI strategies (doc/strategies.md, "SLEI3D"). Times are simulated
+// seconds (AgentView::time, the same clock for every robot); units are fleet indices. Every
+// decoder returns nothing for a malformed message, which the receiver then ignores.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "coinspect/agent/observations.h"
+
+namespace coinspect::strategies::slei {
+
+using agent::Vec3;
+
+inline constexpr const char* kPlanTopic = "slei/plan";      // station -> everyone, flooded
+inline constexpr const char* kReportTopic = "slei/report";  // explorer -> station
+inline constexpr const char* kReplyTopic = "slei/reply";    // station -> explorer
+inline constexpr const char* kOrdersTopic = "slei/orders";  // explorer -> inspector
+inline constexpr const char* kStatusTopic = "slei/status";  // inspector -> explorer
+
+// A feature to inspect and the pose to inspect it from (the explorer's pose when it detected it:
+// a place the explorer flew through, so free for the smaller inspector too).
+struct FeatureTask {
+  uint32_t id = 0;
+  Vec3 position = Vec3::Zero();
+  Vec3 normal = Vec3::Zero();
+  Vec3 viewPosition = Vec3::Zero();
+  double viewYaw = 0.0;
+};
+
+struct Meeting {
+  Vec3 place = Vec3::Zero();
+  double time = 0.0;
+};
+
+// The station's initial plan: one subgroup per explorer.
+struct Subgroup {
+  uint32_t explorer = 0;
+  std::vector<uint32_t> inspectors;
+  int32_t box = -1;  // index into the mission's boxes; -1: none
+  Meeting firstMeeting;
+};
+struct FleetPlan {
+  std::vector<Subgroup> subgroups;
+};
+
+// An explorer at its meeting with the station.
+struct Report {
+  int32_t box = -1;
+  bool boxFinished = false;    // explored, and every feature found in it handed out
+  double remaining = 0.0;      // s, predicted time to finish the box (eq. 9)
+  uint32_t meetingNumber = 0;  // which meeting this is (the station answers each one once)
+};
+
+// The station's answer: the box to work on (the same one, a new one, or -1: none left) and the
+// next meeting.
+struct Reply {
+  uint32_t meetingNumber = 0;
+  int32_t box = -1;
+  Meeting next;
+};
+
+// An explorer's orders to one of its inspectors: features appended to its list in order, and
+// optionally a place to go and wait once the list is done (a new box's corner).
+struct Orders {
+  uint32_t sequence = 0;  // increases per inspector; a repeat is ignored
+  std::vector<FeatureTask> tasks;
+  std::optional<Vec3> waitAt;
+};
+
+// An inspector to its explorer (who also sees where it is): the last orders it took and which
+// features it has inspected so far.
+struct Status {
+  uint32_t lastOrders = 0;  // the sequence of the last orders it took (0: none)
+  std::vector<uint32_t> inspected;
+};
+
+std::vector<uint8_t> encode(const FleetPlan& plan);
+std::vector<uint8_t> encode(const Report& report);
+std::vector<uint8_t> encode(const Reply& reply);
+std::vector<uint8_t> encode(const Orders& orders);
+std::vector<uint8_t> encode(const Status& status);
+
+std::optional<FleetPlan> decodePlan(const std::vector<uint8_t>& bytes);
+std::optional<Report> decodeReport(const std::vector<uint8_t>& bytes);
+std::optional<Reply> decodeReply(const std::vector<uint8_t>& bytes);
+std::optional<Orders> decodeOrders(const std::vector<uint8_t>& bytes);
+std::optional<Status> decodeStatus(const std::vector<uint8_t>& bytes);
+
+}  // namespace coinspect::strategies::slei

@@ -1,0 +1,173 @@
+// `slei3d`: the SLEI3D method (Chen et al., IEEE T-ASE; ../shared/design/slei3d-reference.md)
+// for feature missions ([mission] objective = features, doc/features.md), one class for the
+// three roles (doc/strategies.md, "SLEI3D"):
+// - the station makes the first plan (subgroups, first boxes, first meetings) and floods it;
+//   it then drives from meeting to meeting; at each, the explorer reports its box and predicted
+//   time to finish (eq. 9) and gets its next meeting (a corner of its box), or a new box, the
+//   free one nearest its last (rolling assignment), when it reports its box finished;
+// - an explorer explores its box: its LiDAR maps the structure from afar, but features are
+//   detected only within 5 m of the explorer and +-45 deg of its heading, so exploring means
+//   sweeping the detector over every mapped surface of the box (viewpoints covering surface
+//   patches from 4 m, facing them) and flying to frontiers where the box is not mapped yet;
+//   it hands the features it detects to its inspectors at meetings it flies to, and leaves for
+//   the station in time for each meeting;
+// - an inspector flies its list of features (each from the pose where the explorer detected
+//   it, camera on the feature) until inspected, then waits where its list ends.
+// Robots share key frames by store and forward (they fly on each other's maps) and the
+// simulator carries inspection results to whoever they meet.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <vector>
+
+#include "coinspect/agent/strategy.h"
+#include "coinspect/planning/meeting_route.h"
+#include "coinspect/strategies/coinspect/keyframe_relay.h"
+#include "coinspect/strategies/runtime/flight.h"
+#include "coinspect/strategies/runtime/robot_map.h"
+#include "coinspect/strategies/runtime/unit_info.h"
+#include "coinspect/strategies/slei/fleet_plan.h"
+#include "coinspect/strategies/slei/protocol.h"
+
+namespace coinspect::strategies::slei {
+
+struct SleiOptions {
+  double speed = 2.0;             // m/s, UAV cruise
+  double exploreHeight = 3.0;     // m above the ground to enter a box
+  double meetHeight = 3.0;        // m above the ground where an explorer meets the station
+  double waitHeight = 6.0;        // m above the ground where inspectors wait for orders
+  double gridResolution = 0.5;    // m, map and planning grid
+  double safetyMargin = 0.4;      // m between a UAV's sphere and mapped surface
+  double sweepDistance = 4.0;     // m from a surface patch to sweep the detector over it
+  double handoutPeriod = 5.0;     // s between hand-out decisions (SOEI's period)
+  double meetingGrace = 10.0;     // s: a meeting partner later than this is given up (delta)
+  double inspectPatience = 12.0;  // s at a feature's pose without its inspection: skip it
+  bool evenSplit = true;          // inspectors per subgroup: even, or by first-box volume
+  PlanOptions plan;
+};
+
+class Slei3dStrategy : public agent::Strategy {
+ public:
+  Slei3dStrategy(const agent::StrategyContext& context, const SleiOptions& options);
+  ~Slei3dStrategy() override;
+  agent::AgentCommand decide(const agent::AgentView& view) override;
+  double decisionRate() const override { return 10.0; }
+
+ private:
+  // ---- shared (slei3d_strategy.cpp)
+  void initialise(const agent::AgentView& view);
+  void readPlan(const agent::AgentView& view);
+  void floodPlan(const agent::AgentView& view, agent::AgentCommand& command);
+  bool neighbour(const agent::AgentView& view, uint32_t unit) const;
+  void send(agent::AgentCommand& command, uint32_t to, const char* topic,
+            std::vector<uint8_t> bytes) const;
+  agent::AgentCommand fly(const agent::AgentView& view, std::optional<Vec3> aim);
+  const Subgroup* subgroupOf(uint32_t unit) const;
+  // Where the k-th inspector of a subgroup waits for its first orders: off the corner of the
+  // first box where the station first meets the explorer, 2.5 m apart, away from the box.
+  Vec3 firstWaitPoint(const Subgroup& subgroup, size_t k) const;
+  double boxExploredFraction(int32_t box) const;
+
+  // ---- station (slei3d_station.cpp)
+  struct StationMeeting {
+    uint32_t explorer = 0;
+    Meeting meeting;
+    uint32_t number = 0;
+  };
+  agent::AgentCommand decideStation(const agent::AgentView& view);
+  void answerReports(const agent::AgentView& view, agent::AgentCommand& command);
+  void orderSchedule(const agent::AgentView& view);
+
+  // ---- explorer (slei3d_explorer.cpp)
+  enum class ExplorerPhase { ToBox, Exploring, ToStation, AtStation, ToInspector, Done };
+  agent::AgentCommand decideExplorer(const agent::AgentView& view);
+  void collectDetections(const agent::AgentView& view);
+  void readStatus(const agent::AgentView& view);
+  bool planExploration(const agent::AgentView& view);
+  void planHandout(const agent::AgentView& view);
+  double predictRemaining(const agent::AgentView& view) const;
+  void enterBox(const agent::AgentView& view, int32_t box);
+
+  // ---- inspector (slei3d_inspector.cpp)
+  agent::AgentCommand decideInspector(const agent::AgentView& view);
+
+  SleiOptions options_;
+  runtime::UnitInfo unit_;
+  std::vector<std::string> names_;
+  uint64_t seed_ = 0;  // the run's seed for this unit (SOEI's genetic algorithm)
+  bool initialised_ = false;
+  double groundZ_ = 0.0;
+  std::unique_ptr<runtime::RobotMap> map_;
+  std::unique_ptr<runtime::Flight> flight_;
+  std::unique_ptr<coinspect_strategy::KeyFrameRelay> relay_;
+  std::optional<FleetPlan> plan_;
+  std::vector<uint8_t> planBytes_;
+  double lastFlood_ = -1e300;
+  std::vector<agent::BoxView> boxes_;
+
+  // Station.
+  std::vector<StationMeeting> schedule_;  // upcoming meetings, in the order served
+  std::map<uint32_t, Reply> answered_;    // per explorer: the last reply sent
+  std::vector<uint8_t> boxTaken_;         // per box: assigned to some subgroup
+
+  // Explorer.
+  bool joined_ = false;  // took its part of the plan
+  ExplorerPhase phase_ = ExplorerPhase::ToBox;
+  double lastSend_ = -1e300;
+  int32_t box_ = -1;
+  double boxStart_ = 0.0;
+  Meeting stationMeeting_;
+  uint32_t meetingNumber_ = 1;
+  bool explorationFinished_ = false;
+  std::optional<Vec3> exploreAim_;
+  std::vector<Vec3> unreachable_;   // frontier clusters flown to or given up
+  std::set<uint64_t> swept_;        // surface patches the detector has passed close to
+  std::vector<uint64_t> sweeping_;  // the patches of the viewpoint flown to now
+  size_t openPatches_ = 0;          // in the box at the last plan
+  size_t sweptInBox_ = 0;
+  double lastPlan_ = -1e300;
+  double lastHandout_ = -1e300;
+  std::vector<FeatureTask> pending_;  // detected, not handed out yet
+  size_t scannedInBox_ = 0;           // features detected in the current box (N_s)
+  size_t inspectedInBox_ = 0;         // of those, reported inspected (N_r)
+  std::set<uint32_t> boxFeatures_;
+  std::set<uint32_t> reportedInspected_;  // by its inspectors, as they said
+  // What the explorer knows of one of its inspectors: where it was last known to be and the
+  // features it was given since (its plan, in order), from which its hover windows follow.
+  struct InspectorModel {
+    uint32_t unit = 0;
+    uint32_t sequence = 0;  // last orders sent
+    uint32_t acknowledged = 0;
+    Vec3 position = Vec3::Zero();  // where it was (or will be) at `since`
+    double since = 0.0;
+    std::vector<FeatureTask> tasks;  // given, not known to be inspected
+    std::optional<Vec3> waitAt;      // to pass on with the next orders
+  };
+  std::vector<InspectorModel> inspectors_;
+  // A planned meeting with an inspector (SOEI): where, when, and its orders.
+  struct Handout {
+    size_t inspector = 0;  // index into inspectors_
+    Vec3 place = Vec3::Zero();
+    double time = 0.0;  // planned meeting time; given up meetingGrace after it
+    Orders orders;
+  };
+  std::vector<Handout> handouts_;  // in the order they are flown
+  // The inspector's hover windows as the explorer predicts them (SOEI's input).
+  planning::InspectorPlan predictedPlan(const InspectorModel& model, double now) const;
+
+  // Inspector.
+  std::vector<FeatureTask> tasks_;
+  std::set<uint32_t> inspected_;
+  uint32_t lastOrders_ = 0;
+  std::optional<Vec3> waitAt_;     // where it stays while it has nothing to inspect
+  std::optional<Vec3> afterList_;  // where to go once the list is done (a new box)
+  std::optional<double> atTaskSince_;
+  double lastStatus_ = -1e300;
+};
+
+void registerSlei3d(agent::StrategyRegistry& registry);
+
+}  // namespace coinspect::strategies::slei

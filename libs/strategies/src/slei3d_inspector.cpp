@@ -1,0 +1,82 @@
+// slei3d, an inspector: fly the list of features it was given, each from the pose where its
+// explorer detected it, until the camera has inspected it; then wait where it was told.
+#include <algorithm>
+#include <cmath>
+
+#include "coinspect/strategies/slei/slei3d_strategy.h"
+
+namespace coinspect::strategies::slei {
+
+namespace {
+
+constexpr double kStatusPeriod = 1.0;  // s between status messages while the explorer is near
+
+}  // namespace
+
+agent::AgentCommand Slei3dStrategy::decideInspector(const agent::AgentView& view) {
+  const auto* subgroup = subgroupOf(static_cast<uint32_t>(unit_.self));
+  if (!waitAt_ && subgroup->box >= 0) {
+    const auto& ids = subgroup->inspectors;
+    const auto k = static_cast<size_t>(
+        std::find(ids.begin(), ids.end(), static_cast<uint32_t>(unit_.self)) - ids.begin());
+    waitAt_ = firstWaitPoint(*subgroup, k);
+  }
+  const uint32_t explorer = subgroup->explorer;
+  for (const uint32_t f : view.inspectedFeatures)
+    inspected_.insert(f);
+  for (const auto& message : view.messages) {
+    if (message.topic != kOrdersTopic || message.from != names_[explorer]) continue;
+    const auto orders = decodeOrders(message.bytes);
+    if (!orders || orders->sequence <= lastOrders_) continue;
+    lastOrders_ = orders->sequence;
+    for (const auto& task : orders->tasks)
+      if (!inspected_.count(task.id)) tasks_.push_back(task);
+    if (orders->waitAt) afterList_ = orders->waitAt;
+  }
+  // Off the list: inspected, waited for too long at its pose, or no way there. The inspector
+  // stays at the last pose it flew to (its explorer plans to find it there).
+  const auto drop = [&] {
+    waitAt_ = tasks_.front().viewPosition;
+    tasks_.erase(tasks_.begin());
+    atTaskSince_.reset();
+  };
+  while (!tasks_.empty() && inspected_.count(tasks_.front().id))
+    drop();
+  if (!tasks_.empty() && atTaskSince_ && view.time - *atTaskSince_ > options_.inspectPatience)
+    drop();
+  if (!tasks_.empty() && flight_->failed()) {
+    drop();
+    flight_->hover();
+  }
+  if (tasks_.empty() && afterList_) {
+    waitAt_ = afterList_;
+    afterList_.reset();
+  }
+
+  agent::AgentCommand command;
+  std::optional<Vec3> aim;
+  if (!tasks_.empty()) {
+    const auto& task = tasks_.front();
+    flight_->goTo(task.viewPosition, options_.speed);
+    if (flight_->done() && !atTaskSince_) atTaskSince_ = view.time;
+    aim = task.position;
+    command.activity = agent::Activity::Inspecting;
+  } else {
+    if (waitAt_) flight_->goTo(*waitAt_, options_.speed);
+    command.activity = agent::Activity::Waiting;
+  }
+
+  if (neighbour(view, explorer) && view.time - lastStatus_ >= kStatusPeriod) {
+    lastStatus_ = view.time;
+    Status status;
+    status.lastOrders = lastOrders_;
+    status.inspected.assign(inspected_.begin(), inspected_.end());
+    send(command, explorer, kStatusTopic, encode(status));
+  }
+  auto flown = fly(view, aim);
+  flown.activity = command.activity;
+  flown.messages = std::move(command.messages);
+  return flown;
+}
+
+}  // namespace coinspect::strategies::slei

@@ -1,0 +1,199 @@
+// slei3d: what the three roles share (map, flight, the plan and its flooding, messages).
+#include "coinspect/strategies/slei/slei3d_strategy.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "coinspect/strategies/runtime/box_geometry.h"
+#include "coinspect/strategies/runtime/camera_aim.h"
+#include "coinspect/strategies/runtime/option_reader.h"
+
+namespace coinspect::strategies::slei {
+
+namespace {
+
+constexpr double kFloodPeriod = 1.0;   // s between broadcasts of the plan
+constexpr double kFloodUntil = 120.0;  // s: by then every robot holds the plan
+constexpr size_t kFramesPerDecision = 8;
+
+}  // namespace
+
+Slei3dStrategy::Slei3dStrategy(const agent::StrategyContext& context, const SleiOptions& options)
+    : options_(options), unit_(context), seed_(context.seed) {
+  for (const auto& member : unit_.fleet)
+    names_.push_back(member.name);
+}
+
+Slei3dStrategy::~Slei3dStrategy() = default;
+
+void Slei3dStrategy::initialise(const agent::AgentView& view) {
+  initialised_ = true;
+  groundZ_ = view.odometry.position.z() - 0.1;  // every unit starts 0.1 m above the ground
+  boxes_ = *view.boxes;
+  boxTaken_.assign(boxes_.size(), 0);
+  // Frames travel between robots (meetings are short, so a reply carries many).
+  coinspect_strategy::RelayOptions relay;
+  relay.digestPeriod = 1.0;
+  relay.framesPerReply = 200;
+  relay_ = std::make_unique<coinspect_strategy::KeyFrameRelay>(relay, names_);
+  if (unit_.role == agent::Role::GroundStation) return;
+  runtime::RobotMapOptions mapOptions;
+  // A finer grid than the CARIC strategies': the scenes are small, and the clearance a path
+  // needs (radius + margin + a cell's diagonal) sets how low a UAV can fly, while the detector
+  // must look at features down to the ground from within 5 m and 30 deg of elevation.
+  mapOptions.mapResolution = options_.gridResolution;
+  mapOptions.gridResolution = options_.gridResolution;
+  mapOptions.keyFramesFromView = false;  // through the relay
+  mapOptions.include = {view.odometry.position};
+  if (unit_.role == agent::Role::Explorer) mapOptions.ownSweepEvery = 2;
+  map_ = std::make_unique<runtime::RobotMap>(mapOptions, boxes_, groundZ_);
+  runtime::FlightOptions flight;
+  flight.radius = unit_.radius;
+  flight.safetyMargin = options_.safetyMargin;
+  flight.limits.speed = options_.speed;
+  flight.takeoffHeight = options_.exploreHeight;
+  flight.maxExpansions = 150000;  // a 0.5 m grid has 8 times the cells of 1 m
+  flight_ = std::make_unique<runtime::Flight>(flight, names_, unit_.self);
+  flight_->openTakeoffColumn(*map_, view.odometry.position, view.time);
+}
+
+const Subgroup* Slei3dStrategy::subgroupOf(uint32_t unit) const {
+  if (!plan_) return nullptr;
+  for (const auto& s : plan_->subgroups) {
+    if (s.explorer == unit) return &s;
+    if (std::find(s.inspectors.begin(), s.inspectors.end(), unit) != s.inspectors.end()) return &s;
+  }
+  return nullptr;
+}
+
+Vec3 Slei3dStrategy::firstWaitPoint(const Subgroup& subgroup, size_t k) const {
+  const auto& box = boxes_[static_cast<size_t>(subgroup.box)];
+  const Vec3 corner = boxCorner(box, options_.plan.cornerOffset, 0.0, subgroup.firstMeeting.place);
+  return awayFromBox(box, corner, 2.5 * static_cast<double>(k + 1), groundZ_ + options_.waitHeight);
+}
+
+void Slei3dStrategy::readPlan(const agent::AgentView& view) {
+  if (plan_) return;
+  for (const auto& message : view.messages) {
+    if (message.topic != kPlanTopic) continue;
+    if (auto plan = decodePlan(message.bytes)) {
+      plan_ = std::move(*plan);
+      planBytes_ = message.bytes;
+      return;
+    }
+  }
+}
+
+void Slei3dStrategy::floodPlan(const agent::AgentView& view, agent::AgentCommand& command) {
+  if (!plan_ || view.time > kFloodUntil || view.time - lastFlood_ < kFloodPeriod) return;
+  if (view.neighbours.empty()) return;
+  lastFlood_ = view.time;
+  command.messages.push_back({"", kPlanTopic, planBytes_});
+}
+
+bool Slei3dStrategy::neighbour(const agent::AgentView& view, uint32_t unit) const {
+  return std::any_of(view.neighbours.begin(), view.neighbours.end(),
+                     [&](const agent::NeighbourInfo& n) { return n.name == names_[unit]; });
+}
+
+void Slei3dStrategy::send(agent::AgentCommand& command, uint32_t to, const char* topic,
+                          std::vector<uint8_t> bytes) const {
+  command.messages.push_back({names_[to], topic, std::move(bytes)});
+}
+
+double Slei3dStrategy::boxExploredFraction(int32_t box) const {
+  if (box < 0 || !map_) return 0.0;
+  const auto bounds = runtime::boxBounds(boxes_[static_cast<size_t>(box)]);
+  const double step = map_->options().mapResolution;
+  size_t known = 0, total = 0;
+  for (double x = bounds.min.x() + step / 2; x < bounds.max.x(); x += step)
+    for (double y = bounds.min.y() + step / 2; y < bounds.max.y(); y += step)
+      for (double z = std::max(bounds.min.z(), groundZ_) + step / 2; z < bounds.max.z();
+           z += step) {
+        ++total;
+        if (map_->map().state(Vec3(x, y, z)) != mapping::CellState::Unknown) ++known;
+      }
+  return total ? static_cast<double>(known) / static_cast<double>(total) : 1.0;
+}
+
+agent::AgentCommand Slei3dStrategy::fly(const agent::AgentView& view, std::optional<Vec3> aim) {
+  agent::AgentCommand command;
+  command.setpoint = flight_->step(view, *map_);
+  const Vec3 here = view.odometry.position;
+  if (aim && !flight_->takingOff()) {
+    command.setpoint->yaw = runtime::headingTowards(here, *aim, view.odometry.yaw);
+    command.gimbal = runtime::aimCamera(view.odometry, unit_.camera, view.gimbal, *aim);
+  } else {
+    command.gimbal = agent::GimbalCommand::angles(0.0, 0.0);
+  }
+  return command;
+}
+
+agent::AgentCommand Slei3dStrategy::decide(const agent::AgentView& view) {
+  if (!view.alive || !view.boxes) return {};
+  if (!initialised_) initialise(view);
+  auto relayed = relay_->exchange(view);
+  if (map_) {
+    for (const auto& frame : relay_->takeNew(kFramesPerDecision))
+      map_->insertFrame(*frame);
+    map_->update(view);
+    map_->refresh(view.time);
+  } else {
+    relay_->takeNew(std::numeric_limits<size_t>::max());  // the station keeps no map
+  }
+  readPlan(view);
+  agent::AgentCommand command;
+  if (unit_.role != agent::Role::GroundStation && !subgroupOf(static_cast<uint32_t>(unit_.self))) {
+    command.activity = agent::Activity::Waiting;  // no plan yet (or no part in it): on the ground
+  } else {
+    switch (unit_.role) {
+      case agent::Role::GroundStation:
+        command = decideStation(view);
+        break;
+      case agent::Role::Explorer:
+        command = decideExplorer(view);
+        break;
+      case agent::Role::Photographer:
+        command = decideInspector(view);
+        break;
+    }
+  }
+  floodPlan(view, command);
+  for (auto& message : relayed)
+    command.messages.push_back(std::move(message));
+  return command;
+}
+
+namespace {
+
+SleiOptions readOptions(const Config& config) {
+  const auto number = [&](const char* key, double fallback, double low, double high) {
+    return runtime::readNumber(config, "slei3d", key, fallback, low, high);
+  };
+  SleiOptions o;
+  o.speed = number("speed", o.speed, 0.1, 20.0);
+  o.exploreHeight = number("explore_height", o.exploreHeight, 1.0, 100.0);
+  o.meetHeight = number("meet_height", o.meetHeight, 1.0, 100.0);
+  o.waitHeight = number("wait_height", o.waitHeight, 1.0, 100.0);
+  o.gridResolution = number("grid_resolution", o.gridResolution, 0.2, 2.0);
+  o.safetyMargin = number("safety_margin", o.safetyMargin, 0.0, 10.0);
+  o.sweepDistance = number("sweep_distance", o.sweepDistance, 1.0, 100.0);
+  o.handoutPeriod = number("handout_period", o.handoutPeriod, 0.1, 600.0);
+  o.meetingGrace = number("meeting_grace", o.meetingGrace, 0.0, 600.0);
+  o.inspectPatience = number("inspect_patience", o.inspectPatience, 0.0, 600.0);
+  o.evenSplit = config.getBool("slei3d", "even_split", o.evenSplit);
+  o.plan.evenSplit = o.evenSplit;
+  o.plan.stationSpeed = number("station_speed", o.plan.stationSpeed, 0.1, 20.0);
+  return o;
+}
+
+}  // namespace
+
+void registerSlei3d(agent::StrategyRegistry& registry) {
+  registry.registerStrategy("slei3d", [](const agent::StrategyContext& context) {
+    return std::make_unique<Slei3dStrategy>(context, readOptions(context.config));
+  });
+}
+
+}  // namespace coinspect::strategies::slei

@@ -1,0 +1,124 @@
+#include "coinspect/strategies/slei/fleet_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "coinspect/planning/slei_schedule.h"
+#include "coinspect/strategies/runtime/box_geometry.h"
+
+namespace coinspect::strategies::slei {
+
+namespace {
+
+double horizontal(const Vec3& a, const Vec3& b) {
+  return std::hypot(a.x() - b.x(), a.y() - b.y());
+}
+
+}  // namespace
+
+std::vector<size_t> inspectorsPerSubgroup(size_t inspectors, size_t explorers, bool even,
+                                          const std::vector<double>& weights) {
+  std::vector<size_t> out(explorers, 0);
+  if (explorers == 0) return out;
+  double total = 0.0;
+  for (const double w : weights)
+    total += std::max(0.0, w);
+  if (even || weights.size() != explorers || !(total > 0.0)) {
+    for (size_t i = 0; i < explorers; ++i)
+      out[i] = inspectors / explorers + (i < inspectors % explorers ? 1 : 0);
+    return out;
+  }
+  std::vector<double> fraction(explorers);
+  size_t given = 0;
+  for (size_t i = 0; i < explorers; ++i) {
+    const double share = static_cast<double>(inspectors) * std::max(0.0, weights[i]) / total;
+    out[i] = static_cast<size_t>(std::floor(share));
+    fraction[i] = share - static_cast<double>(out[i]);
+    given += out[i];
+  }
+  std::vector<size_t> order(explorers);
+  for (size_t i = 0; i < explorers; ++i)
+    order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return fraction[a] > fraction[b]; });
+  for (size_t k = 0; given < inspectors; ++k, ++given)
+    ++out[order[k % explorers]];
+  return out;
+}
+
+int32_t nearestFreeBox(const std::vector<agent::BoxView>& boxes,
+                       const std::vector<uint8_t>& assigned, const Vec3& from) {
+  int32_t best = -1;
+  double bestDistance = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < boxes.size(); ++i) {
+    if (i < assigned.size() && assigned[i]) continue;
+    const double d = horizontal(boxes[i].center, from);
+    if (d < bestDistance) bestDistance = d, best = static_cast<int32_t>(i);
+  }
+  return best;
+}
+
+Vec3 boxCorner(const agent::BoxView& box, double offset, double z, const Vec3& from) {
+  const auto bounds = runtime::boxBounds(box);
+  const Vec3 grow(offset, offset, 0.0);
+  planning::MeetingCornerOptions options;
+  options.inset = 0.0;
+  options.height = z;
+  return planning::nearestMeetingCorner(bounds.min - grow, bounds.max + grow, from, options).point;
+}
+
+Vec3 awayFromBox(const agent::BoxView& box, const Vec3& corner, double distance, double z) {
+  Vec3 out(corner.x() - box.center.x(), corner.y() - box.center.y(), 0.0);
+  const double norm = out.norm();
+  out = norm > 1e-9 ? Vec3(out / norm) : Vec3::UnitX();
+  return Vec3(corner.x(), corner.y(), z) + distance * out;
+}
+
+FleetPlan makeFleetPlan(const std::vector<agent::FleetMember>& fleet,
+                        const std::vector<agent::BoxView>& boxes, const Vec3& station,
+                        double groundZ, double now, const PlanOptions& options) {
+  std::vector<uint32_t> explorers, inspectors;
+  for (size_t i = 0; i < fleet.size(); ++i) {
+    if (fleet[i].role == agent::Role::Explorer) explorers.push_back(static_cast<uint32_t>(i));
+    if (fleet[i].role == agent::Role::Photographer) inspectors.push_back(static_cast<uint32_t>(i));
+  }
+  FleetPlan plan;
+  std::vector<uint8_t> assigned(boxes.size(), 0);
+  Vec3 previousBox = station;
+  for (const uint32_t explorer : explorers) {
+    Subgroup s;
+    s.explorer = explorer;
+    s.box = nearestFreeBox(boxes, assigned, previousBox);
+    if (s.box >= 0) {
+      assigned[static_cast<size_t>(s.box)] = 1;
+      previousBox = boxes[static_cast<size_t>(s.box)].center;
+    }
+    plan.subgroups.push_back(s);
+  }
+  std::vector<double> weights;
+  for (const auto& s : plan.subgroups) {
+    const auto& size = s.box >= 0 ? boxes[static_cast<size_t>(s.box)].size : Vec3::Zero().eval();
+    weights.push_back(size.prod());
+  }
+  const auto counts =
+      inspectorsPerSubgroup(inspectors.size(), explorers.size(), options.evenSplit, weights);
+  size_t next = 0;
+  for (size_t k = 0; k < plan.subgroups.size(); ++k)
+    for (size_t j = 0; j < counts[k]; ++j)
+      plan.subgroups[k].inspectors.push_back(inspectors[next++]);
+  // The station's first round: from where it stands, each subgroup's nearest corner in turn.
+  Vec3 at = station;
+  double time = now + options.firstMeetingLead;
+  for (auto& s : plan.subgroups) {
+    if (s.box < 0) continue;
+    const Vec3 corner =
+        boxCorner(boxes[static_cast<size_t>(s.box)], options.cornerOffset, groundZ, at);
+    time += horizontal(corner, at) / options.stationSpeed + options.legBuffer;
+    s.firstMeeting = {corner, time};
+    at = corner;
+  }
+  return plan;
+}
+
+}  // namespace coinspect::strategies::slei

@@ -1,0 +1,160 @@
+#include "coinspect/strategies/slei/protocol.h"
+
+#include "coinspect/strategies/runtime/wire.h"
+
+namespace coinspect::strategies::slei {
+
+namespace {
+
+using runtime::WireReader;
+using runtime::WireWriter;
+
+constexpr size_t kTaskBytes = 4 + 3 * 24 + 8;
+
+void put(WireWriter& w, const Meeting& m) {
+  w.vec3(m.place);
+  w.f64(m.time);
+}
+bool get(WireReader& r, Meeting* m) {
+  return r.vec3(&m->place) && r.f64(&m->time);
+}
+
+void put(WireWriter& w, const FeatureTask& t) {
+  w.u32(t.id);
+  w.vec3(t.position);
+  w.vec3(t.normal);
+  w.vec3(t.viewPosition);
+  w.f64(t.viewYaw);
+}
+bool get(WireReader& r, FeatureTask* t) {
+  return r.u32(&t->id) && r.vec3(&t->position) && r.vec3(&t->normal) && r.vec3(&t->viewPosition) &&
+         r.f64(&t->viewYaw);
+}
+
+void putIds(WireWriter& w, const std::vector<uint32_t>& ids) {
+  w.u32(static_cast<uint32_t>(ids.size()));
+  for (const uint32_t id : ids)
+    w.u32(id);
+}
+bool getIds(WireReader& r, std::vector<uint32_t>* ids) {
+  uint32_t n = 0;
+  if (!r.count(&n, 4)) return false;
+  ids->resize(n);
+  for (auto& id : *ids)
+    if (!r.u32(&id)) return false;
+  return true;
+}
+
+template <class T>
+std::optional<T> finished(WireReader& r, bool ok, T value) {
+  if (!ok || !r.done()) return std::nullopt;
+  return value;
+}
+
+}  // namespace
+
+std::vector<uint8_t> encode(const FleetPlan& plan) {
+  WireWriter w;
+  w.u32(static_cast<uint32_t>(plan.subgroups.size()));
+  for (const auto& s : plan.subgroups) {
+    w.u32(s.explorer);
+    putIds(w, s.inspectors);
+    w.i32(s.box);
+    put(w, s.firstMeeting);
+  }
+  return w.take();
+}
+
+std::optional<FleetPlan> decodePlan(const std::vector<uint8_t>& bytes) {
+  WireReader r(bytes);
+  FleetPlan plan;
+  uint32_t n = 0;
+  bool ok = r.count(&n, 4 + 4 + 4 + 32);
+  for (uint32_t i = 0; ok && i < n; ++i) {
+    Subgroup s;
+    ok = r.u32(&s.explorer) && getIds(r, &s.inspectors) && r.i32(&s.box) && get(r, &s.firstMeeting);
+    plan.subgroups.push_back(std::move(s));
+  }
+  return finished(r, ok, std::move(plan));
+}
+
+std::vector<uint8_t> encode(const Report& report) {
+  WireWriter w;
+  w.i32(report.box);
+  w.u8(report.boxFinished ? 1 : 0);
+  w.f64(report.remaining);
+  w.u32(report.meetingNumber);
+  return w.take();
+}
+
+std::optional<Report> decodeReport(const std::vector<uint8_t>& bytes) {
+  WireReader r(bytes);
+  Report report;
+  uint8_t finishedFlag = 0;
+  const bool ok = r.i32(&report.box) && r.u8(&finishedFlag) && finishedFlag <= 1 &&
+                  r.f64(&report.remaining) && r.u32(&report.meetingNumber);
+  report.boxFinished = finishedFlag == 1;
+  return finished(r, ok, report);
+}
+
+std::vector<uint8_t> encode(const Reply& reply) {
+  WireWriter w;
+  w.u32(reply.meetingNumber);
+  w.i32(reply.box);
+  put(w, reply.next);
+  return w.take();
+}
+
+std::optional<Reply> decodeReply(const std::vector<uint8_t>& bytes) {
+  WireReader r(bytes);
+  Reply reply;
+  const bool ok = r.u32(&reply.meetingNumber) && r.i32(&reply.box) && get(r, &reply.next);
+  return finished(r, ok, reply);
+}
+
+std::vector<uint8_t> encode(const Orders& orders) {
+  WireWriter w;
+  w.u32(orders.sequence);
+  w.u32(static_cast<uint32_t>(orders.tasks.size()));
+  for (const auto& t : orders.tasks)
+    put(w, t);
+  w.u8(orders.waitAt ? 1 : 0);
+  if (orders.waitAt) w.vec3(*orders.waitAt);
+  return w.take();
+}
+
+std::optional<Orders> decodeOrders(const std::vector<uint8_t>& bytes) {
+  WireReader r(bytes);
+  Orders orders;
+  uint32_t n = 0;
+  bool ok = r.u32(&orders.sequence) && r.count(&n, kTaskBytes);
+  for (uint32_t i = 0; ok && i < n; ++i) {
+    FeatureTask t;
+    ok = get(r, &t);
+    orders.tasks.push_back(t);
+  }
+  uint8_t hasWait = 0;
+  ok = ok && r.u8(&hasWait) && hasWait <= 1;
+  if (ok && hasWait) {
+    Vec3 p;
+    ok = r.vec3(&p);
+    orders.waitAt = p;
+  }
+  return finished(r, ok, std::move(orders));
+}
+
+std::vector<uint8_t> encode(const Status& status) {
+  WireWriter w;
+  w.u32(status.lastOrders);
+  putIds(w, status.inspected);
+  return w.take();
+}
+
+std::optional<Status> decodeStatus(const std::vector<uint8_t>& bytes) {
+  WireReader r(bytes);
+  Status status;
+  const bool ok = r.u32(&status.lastOrders) && getIds(r, &status.inspected);
+  return finished(r, ok, std::move(status));
+}
+
+}  // namespace coinspect::strategies::slei

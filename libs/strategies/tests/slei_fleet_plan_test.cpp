@@ -1,0 +1,74 @@
+#include "coinspect/strategies/slei/fleet_plan.h"
+
+#include <gtest/gtest.h>
+
+#include "test_boxes.h"
+
+namespace coinspect::strategies::slei {
+namespace {
+
+using test::makeBox;
+
+TEST(SleiFleetPlan, EvenSplitGivesTheRemainderToTheFirstSubgroups) {
+  EXPECT_EQ(inspectorsPerSubgroup(8, 3, true), (std::vector<size_t>{3, 3, 2}));
+  EXPECT_EQ(inspectorsPerSubgroup(4, 2, true), (std::vector<size_t>{2, 2}));
+  EXPECT_EQ(inspectorsPerSubgroup(1, 2, true), (std::vector<size_t>{1, 0}));
+  EXPECT_TRUE(inspectorsPerSubgroup(3, 0, true).empty());
+}
+
+TEST(SleiFleetPlan, VolumeSplitFloorsSharesAndHandsTheRestToTheLargestFractions) {
+  // Shares of 5 by 1:2:2 = 1, 2, 2 exactly; by 1:1:3 = 1, 1, 3; by 3:3:4 of 7 = 2.1, 2.1, 2.8.
+  EXPECT_EQ(inspectorsPerSubgroup(5, 3, false, {1, 2, 2}), (std::vector<size_t>{1, 2, 2}));
+  EXPECT_EQ(inspectorsPerSubgroup(5, 3, false, {1, 1, 3}), (std::vector<size_t>{1, 1, 3}));
+  EXPECT_EQ(inspectorsPerSubgroup(7, 3, false, {3, 3, 4}), (std::vector<size_t>{2, 2, 3}));
+  // Weights that cannot be used fall back to the even split.
+  EXPECT_EQ(inspectorsPerSubgroup(4, 2, false, {0, 0}), (std::vector<size_t>{2, 2}));
+}
+
+TEST(SleiFleetPlan, NearestFreeBoxSkipsAssignedOnesAndMeasuresHorizontally) {
+  const std::vector<agent::BoxView> boxes{makeBox({10, 0, 50}, {2, 2, 2}),
+                                          makeBox({0, 12, 1}, {2, 2, 2}),
+                                          makeBox({-20, 0, 1}, {2, 2, 2})};
+  EXPECT_EQ(nearestFreeBox(boxes, {0, 0, 0}, agent::Vec3::Zero()), 0);  // height ignored
+  EXPECT_EQ(nearestFreeBox(boxes, {1, 0, 0}, agent::Vec3::Zero()), 1);
+  EXPECT_EQ(nearestFreeBox(boxes, {1, 1, 1}, agent::Vec3::Zero()), -1);
+}
+
+TEST(SleiFleetPlan, CornersLieOutsideTheBoxAndAwayFromIt) {
+  const auto box = makeBox({0, 0, 5}, {10, 6, 10});
+  const Vec3 corner = boxCorner(box, 2.0, 0.5, {20, 20, 0});
+  EXPECT_TRUE(corner.isApprox(Vec3(7, 5, 0.5)));
+  const Vec3 away = awayFromBox(box, corner, 5.0, 6.0);
+  EXPECT_NEAR(std::hypot(away.x(), away.y()), std::hypot(7.0, 5.0) + 5.0, 1e-9);
+  EXPECT_DOUBLE_EQ(away.z(), 6.0);
+}
+
+TEST(SleiFleetPlan, ExplorersTakeTheNearestBoxesInTurnAndMeetTheStationInAChain) {
+  std::vector<agent::FleetMember> fleet{
+      {"gcs", agent::Role::GroundStation}, {"e1", agent::Role::Explorer},
+      {"i1", agent::Role::Photographer},   {"e2", agent::Role::Explorer},
+      {"i2", agent::Role::Photographer},   {"i3", agent::Role::Photographer}};
+  const std::vector<agent::BoxView> boxes{makeBox({40, 0, 5}, {4, 4, 10}),
+                                          makeBox({10, 0, 5}, {4, 4, 10}),
+                                          makeBox({20, 0, 5}, {4, 4, 10})};
+  PlanOptions options;
+  const auto plan = makeFleetPlan(fleet, boxes, Vec3(0, 0, 0.1), 0.0, 100.0, options);
+  ASSERT_EQ(plan.subgroups.size(), 2u);
+  EXPECT_EQ(plan.subgroups[0].explorer, 1u);
+  EXPECT_EQ(plan.subgroups[0].box, 1);  // nearest the station
+  EXPECT_EQ(plan.subgroups[1].explorer, 3u);
+  EXPECT_EQ(plan.subgroups[1].box, 2);  // nearest the first choice
+  EXPECT_EQ(plan.subgroups[0].inspectors, (std::vector<uint32_t>{2, 4}));
+  EXPECT_EQ(plan.subgroups[1].inspectors, (std::vector<uint32_t>{5}));
+  // First meetings: the corner of each box nearest the previous stop, 60 s + 20 s per leg after
+  // now, legs driven at 1 m/s. Box 1 spans x 8..12 -> corners at x 6 and 14 (2 m outside).
+  const auto& first = plan.subgroups[0].firstMeeting;
+  EXPECT_TRUE(first.place.isApprox(Vec3(6, -4, 0)));
+  EXPECT_NEAR(first.time, 100.0 + 60.0 + std::hypot(6.0, 4.0) + 20.0, 1e-9);
+  const auto& second = plan.subgroups[1].firstMeeting;
+  EXPECT_TRUE(second.place.isApprox(Vec3(16, -4, 0)));
+  EXPECT_NEAR(second.time, first.time + 10.0 + 20.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace coinspect::strategies::slei

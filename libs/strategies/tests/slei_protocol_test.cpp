@@ -1,0 +1,69 @@
+#include "coinspect/strategies/slei/protocol.h"
+
+#include <gtest/gtest.h>
+
+namespace coinspect::strategies::slei {
+namespace {
+
+TEST(SleiProtocol, EveryMessageRoundTrips) {
+  FleetPlan plan;
+  plan.subgroups.push_back({1, {2, 4}, 3, {Vec3(1, 2, 0), 81.5}});
+  plan.subgroups.push_back({3, {}, -1, {Vec3::Zero(), 0.0}});
+  const auto decodedPlan = decodePlan(encode(plan));
+  ASSERT_TRUE(decodedPlan);
+  ASSERT_EQ(decodedPlan->subgroups.size(), 2u);
+  EXPECT_EQ(decodedPlan->subgroups[0].inspectors, (std::vector<uint32_t>{2, 4}));
+  EXPECT_EQ(decodedPlan->subgroups[0].box, 3);
+  EXPECT_EQ(decodedPlan->subgroups[0].firstMeeting.place, Vec3(1, 2, 0));
+  EXPECT_EQ(decodedPlan->subgroups[1].box, -1);
+
+  const auto report = decodeReport(encode(Report{2, true, 75.25, 4}));
+  ASSERT_TRUE(report);
+  EXPECT_EQ(report->box, 2);
+  EXPECT_TRUE(report->boxFinished);
+  EXPECT_EQ(report->remaining, 75.25);
+  EXPECT_EQ(report->meetingNumber, 4u);
+
+  const auto reply = decodeReply(encode(Reply{4, 5, {Vec3(3, 4, 5), 200.0}}));
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->box, 5);
+  EXPECT_EQ(reply->next.time, 200.0);
+
+  Orders orders;
+  orders.sequence = 7;
+  orders.tasks.push_back({9, Vec3(1, 1, 1), Vec3(0, -1, 0), Vec3(1, -3, 2), 1.5});
+  orders.waitAt = Vec3(8, 8, 6);
+  const auto decodedOrders = decodeOrders(encode(orders));
+  ASSERT_TRUE(decodedOrders);
+  EXPECT_EQ(decodedOrders->sequence, 7u);
+  ASSERT_EQ(decodedOrders->tasks.size(), 1u);
+  EXPECT_EQ(decodedOrders->tasks[0].viewPosition, Vec3(1, -3, 2));
+  EXPECT_EQ(decodedOrders->tasks[0].viewYaw, 1.5);
+  EXPECT_EQ(decodedOrders->waitAt, Vec3(8, 8, 6));
+  orders.waitAt.reset();
+  EXPECT_FALSE(decodeOrders(encode(orders))->waitAt);
+
+  const auto status = decodeStatus(encode(Status{7, {1, 5, 9}}));
+  ASSERT_TRUE(status);
+  EXPECT_EQ(status->inspected, (std::vector<uint32_t>{1, 5, 9}));
+}
+
+TEST(SleiProtocol, MalformedMessagesAreRejected) {
+  auto bytes = encode(Report{2, true, 1.0, 1});
+  bytes.pop_back();  // truncated
+  EXPECT_FALSE(decodeReport(bytes));
+  bytes = encode(Report{2, true, 1.0, 1});
+  bytes.push_back(0);  // trailing garbage
+  EXPECT_FALSE(decodeReport(bytes));
+  bytes = encode(Report{2, true, 1.0, 1});
+  bytes[4] = 7;  // a flag that is neither 0 nor 1
+  EXPECT_FALSE(decodeReport(bytes));
+  // A list length larger than the message could hold.
+  std::vector<uint8_t> huge{0xff, 0xff, 0xff, 0x7f};
+  EXPECT_FALSE(decodePlan(huge));
+  EXPECT_FALSE(decodeStatus({1, 0, 0, 0, 0xff, 0xff, 0, 0}));
+  EXPECT_FALSE(decodeOrders({}));
+}
+
+}  // namespace
+}  // namespace coinspect::strategies::slei

@@ -1,0 +1,33 @@
+#!/bin/bash
+# End to end: a SLEI strategy flies a short feature mission; its report.json must show features
+# discovered, handed out and collected at the ground station above floors, at least one
+# station-explorer meeting, and no collision or death.
+# Usage: feature_mission_test.sh <coinspect> <config> <strategy> <min discovered> <min assigned>
+#        <min collected> <scratch dir>
+set -euo pipefail
+coinspect=$1
+config=$2
+strategy=$3
+min_discovered=$4
+min_assigned=$5
+min_collected=$6
+out=$7
+rm -rf "$out"
+"$coinspect" run "$config" --set "strategy.name=$strategy" --quiet --out "$out" > "$out.log"
+grep -E '^(features|meetings|collisions) ' "$out.log"
+# The summary's lines: "features    150: discovered D, assigned A, inspected I, collected C ...",
+# "meetings    gcs-explorer G, ...", "collisions  N (deaths M)", "mission ... strategy S, ...".
+count() { sed -nE "s/^$1 .*$2 ([0-9]+).*/\1/p" "$out.log"; }
+used=$(sed -nE 's/^mission .*strategy ([^,]+),.*/\1/p' "$out.log")
+test "$used" = "$strategy" || { echo "ran '$used', not '$strategy'"; exit 1; }
+grep -qE '^collisions +0 \(deaths 0\)' "$out.log" || { echo "collisions or deaths"; exit 1; }
+check() {
+  local value
+  value=$(count "$1" "$2")
+  [[ -n "$value" && "$value" -ge "$3" ]] || { echo "$2: '$value' below $3"; exit 1; }
+}
+check features discovered "$min_discovered"
+check features assigned "$min_assigned"
+check features collected "$min_collected"
+check meetings gcs-explorer 1
+echo "ok: $strategy"
