@@ -3,8 +3,6 @@
 #include <cmath>
 
 #include "coinspect/planning/slei_meeting_order.h"
-#include "coinspect/planning/slei_schedule.h"
-#include "coinspect/strategies/runtime/box_geometry.h"
 #include "coinspect/strategies/slei/slei3d_strategy.h"
 
 namespace coinspect::strategies::slei {
@@ -74,23 +72,13 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
     if (report->boxFinished && report->box < 0 && report->remaining <= 0.0) {
       reply.next = {here, kNoMeeting};  // nothing left for this subgroup
     } else {
-      // The paper's rule: of the box's corners, the one the station reaches closest to the
-      // planned time (driving straight from here after this meeting's service).
-      Vec3 place = here;
-      if (reply.box >= 0) {
-        const auto bounds = runtime::boxBounds(boxes_[static_cast<size_t>(reply.box)]);
-        const Vec3 grow(options_.plan.cornerOffset, options_.plan.cornerOffset, 0.0);
-        planning::MeetingCornerOptions corners;
-        corners.inset = 0.0;
-        corners.height = here.z();
-        const auto arrival = [&](const Vec3& corner) {
-          return view.time + kService +
-                 (corner - here).head<2>().norm() / options_.plan.stationSpeed;
-        };
-        place = planning::bestTimedMeetingCorner(bounds.min - grow, bounds.max + grow, arrival,
-                                                 view.time + lead, corners)
-                    .point;
-      }
+      // The corner nearest the station (the reference's rule). The paper's, the corner whose
+      // arrival time best matches the planned time (planning::bestTimedMeetingCorner), needs
+      // the station's ground paths: driving straight, it stopped at a wall on the far side of a
+      // box for the rest of a slei-a run.
+      const Vec3 place = reply.box >= 0 ? boxCorner(boxes_[static_cast<size_t>(reply.box)],
+                                                    options_.plan.cornerOffset, here.z(), here)
+                                        : here;
       reply.next = {place, view.time + lead};
     }
     answered_[explorer] = reply;
