@@ -86,8 +86,7 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
     schedule_.erase(std::remove_if(schedule_.begin(), schedule_.end(),
                                    [&](const StationMeeting& m) { return m.explorer == explorer; }),
                     schedule_.end());
-    if (reply.next.time < kNoMeeting)
-      schedule_.push_back({explorer, reply.next, report->meetingNumber + 1});
+    if (reply.next.time < kNoMeeting) schedule_.push_back({explorer, reply.next});
     orderSchedule(view);
   }
 }
@@ -100,7 +99,7 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
     planBytes_ = encode(*plan_);
     for (const auto& s : plan_->subgroups) {
       if (s.box >= 0) boxTaken_[static_cast<size_t>(s.box)] = 1;
-      if (s.box >= 0) schedule_.push_back({s.explorer, s.firstMeeting, 1});
+      if (s.box >= 0) schedule_.push_back({s.explorer, s.firstMeeting});
     }
     orderSchedule(view);
   }

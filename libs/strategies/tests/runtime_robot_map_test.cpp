@@ -26,6 +26,19 @@ agent::KeyFrame wallsAndGround() {
   return frame;
 }
 
+TEST(RobotMap, TheRegionAlsoHoldsTheIncludedPoints) {
+  const std::vector<BoxView> boxes = {makeBox(Vec3(12, 0, 5), Vec3(6, 10, 10))};
+  RobotMapOptions options;
+  options.regionMargin = 5.0;
+  const RobotMap plain(options, boxes, 0.0);
+  EXPECT_DOUBLE_EQ(plain.region().min.y(), -10.0);  // box from y = -5, 5 m of margin
+  options.include = {Vec3(12, -30, 0.1)};
+  const RobotMap grown(options, boxes, 0.0);
+  EXPECT_DOUBLE_EQ(grown.region().min.y(), -32.0);  // 2 m of room around the point
+  EXPECT_EQ(grown.region().max, plain.region().max);
+  EXPECT_TRUE(grown.grid().contains(grown.grid().cellOf(Vec3(12, -30, 0.1))));
+}
+
 TEST(RobotMap, SurfaceNearBoxesKeepsMappedStructureInABoxNotTheGroundNorStructureFarFromBoxes) {
   const std::vector<BoxView> boxes = {makeBox(Vec3(12, 0, 5), Vec3(6, 10, 10))};
   RobotMapOptions options;

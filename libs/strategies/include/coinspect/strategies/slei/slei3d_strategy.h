@@ -75,7 +75,6 @@ class Slei3dStrategy : public agent::Strategy {
   struct StationMeeting {
     uint32_t explorer = 0;
     Meeting meeting;
-    uint32_t number = 0;
   };
   agent::AgentCommand decideStation(const agent::AgentView& view);
   void answerReports(const agent::AgentView& view, agent::AgentCommand& command);
