@@ -65,7 +65,7 @@ std::vector<Handover> CarriedData::exchange(const LinkMatrix& links,
 MeetingCounter::MeetingCounter(size_t units, double gap)
     : units_(units),
       gap_(gap),
-      linked_(units * units, 0),
+      previous_(units),
       lostSince_(units * units, -std::numeric_limits<double>::infinity()) {
   if (!(gap >= 0.0) || !std::isfinite(gap))
     throw InputError("meetings", "gap", "must be a finite time >= 0 s");
@@ -75,16 +75,14 @@ std::vector<std::pair<uint32_t, uint32_t>> MeetingCounter::update(double time,
                                                                   const LinkMatrix& links) {
   COINSPECT_ASSERT(links.size() == units_);
   std::vector<std::pair<uint32_t, uint32_t>> meetings;
-  for (uint32_t a = 0; a < units_; ++a) {
-    for (uint32_t b = a + 1; b < units_; ++b) {
-      const size_t cell = a * units_ + b;
-      const bool now = links.linked(a, b);
-      if (now && !linked_[cell] && !first_ && time - lostSince_[cell] >= gap_)
-        meetings.emplace_back(a, b);
-      if (!now && linked_[cell]) lostSince_[cell] = time;
-      linked_[cell] = now;
-    }
+  for (const auto& change : links.changedSince(previous_)) {
+    double& lost = lostSince_[change.a * units_ + change.b];
+    if (!change.linked)
+      lost = time;
+    else if (!first_ && time - lost >= gap_)
+      meetings.emplace_back(change.a, change.b);
   }
+  previous_ = links;
   first_ = false;
   return meetings;
 }

@@ -338,8 +338,9 @@ void Mission::Impl::updateTopology() {
       for (size_t j = 0; j < units.size(); ++j)
         if (j != u) links.setLinked(static_cast<uint32_t>(u), static_cast<uint32_t>(j), false);
   }
-  network->setTopology(links, aliveFlags(), now());
-  if (features && features->exchange(now(), links, aliveFlags())) allCollected = true;
+  const auto alive = aliveFlags();
+  network->setTopology(links, alive, now());
+  if (features && features->exchange(now(), links, alive)) allCollected = true;
   size_t improved = 0;
   if (station && units[*station].alive()) {
     for (size_t i = 0; i < units.size(); ++i)

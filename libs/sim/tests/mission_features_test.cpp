@@ -32,16 +32,9 @@ world::Scenario featureScene() {
   box.center = world::Vec3(10, 0, 4);
   box.size = world::Vec3(1, 4, 2);
   scenario.boxes.push_back(box);
-  const auto unit = [](const char* name, world::UnitRole role, const world::Vec3& at) {
-    world::UnitSpec spec;
-    spec.name = name;
-    spec.role = role;
-    spec.startPosition = at;
-    return spec;
-  };
-  scenario.fleet = {unit("gcs", world::UnitRole::GroundStation, {0, 0, 1}),
-                    unit("e", world::UnitRole::Explorer, {0, -3, 0}),
-                    unit("i", world::UnitRole::Photographer, {0, 3, 0})};
+  scenario.fleet = {testing::unitAt("gcs", world::UnitRole::GroundStation, {0, 0, 1}),
+                    testing::unitAt("e", world::UnitRole::Explorer, {0, -3, 0}),
+                    testing::unitAt("i", world::UnitRole::Photographer, {0, 3, 0})};
   scenario.missionBudget = 40.0;
   return scenario;
 }

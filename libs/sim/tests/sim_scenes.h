@@ -21,6 +21,16 @@ inline world::TriangleMesh boxMesh(const world::Vec3& low, const world::Vec3& hi
   return mesh;
 }
 
+// A unit of the fleet with the default camera, starting at `at`.
+inline world::UnitSpec unitAt(const std::string& name, world::UnitRole role,
+                              const world::Vec3& at) {
+  world::UnitSpec unit;
+  unit.name = name;
+  unit.role = role;
+  unit.startPosition = at;
+  return unit;
+}
+
 // A wall occupying 10 <= x <= 11, -5 <= y <= 5, 0 <= z <= 10, with interest points every 0.5 m
 // on its face x = 10 for |y| <= 2, 3 <= z <= 7 (normal -x). The ground station stands at
 // (0, 0, 1); photographers named in `names` start on the ground at (0, y, 0) for the given ys.
@@ -42,18 +52,9 @@ inline world::Scenario wallScenario(const std::vector<std::pair<std::string, dou
   box.center = world::Vec3(10, 0, 5);
   box.size = world::Vec3(1, 5, 5);
   scenario.boxes.push_back(box);
-  world::UnitSpec gcs;
-  gcs.name = "gcs";
-  gcs.role = world::UnitRole::GroundStation;
-  gcs.startPosition = world::Vec3(0, 0, 1);
-  scenario.fleet.push_back(gcs);
-  for (const auto& [name, y] : uavs) {
-    world::UnitSpec unit;
-    unit.name = name;
-    unit.role = world::UnitRole::Photographer;
-    unit.startPosition = world::Vec3(0, y, 0);
-    scenario.fleet.push_back(unit);
-  }
+  scenario.fleet.push_back(unitAt("gcs", world::UnitRole::GroundStation, {0, 0, 1}));
+  for (const auto& [name, y] : uavs)
+    scenario.fleet.push_back(unitAt(name, world::UnitRole::Photographer, {0, y, 0}));
   scenario.missionBudget = 20.0;
   return scenario;
 }

@@ -26,7 +26,6 @@ constexpr double kTravelFactor = 1.5;       // paths are longer than straight li
 constexpr double kSettle = 2.0;             // s an inspector needs at a pose beyond t_q
 constexpr double kInspectionTime = 3.0;     // s, t_q ([features] inspect_time's default)
 constexpr double kNoMeeting = 1e299;
-constexpr double kMeetOffset = 0.0;  // m off the station's corner: right above it
 
 double straightTime(const Vec3& a, const Vec3& b, double speed) {
   return kTravelFactor * (a - b).norm() / speed;
@@ -309,17 +308,10 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
   readStatus(view);
   agent::AgentCommand command;
   const Vec3 here = view.odometry.position;
-  // Right above the station's corner: within link range of a station on the ground there.
-  const auto nearestBox =
-      std::min_element(boxes_.begin(), boxes_.end(), [&](const auto& a, const auto& b) {
-        return (a.center - stationMeeting_.place).template head<2>().squaredNorm() <
-               (b.center - stationMeeting_.place).template head<2>().squaredNorm();
-      });
-  const Vec3 meetingPlace = nearestBox == boxes_.end()
-                                ? Vec3(stationMeeting_.place.x(), stationMeeting_.place.y(),
-                                       groundZ_ + options_.meetHeight)
-                                : awayFromBox(*nearestBox, stationMeeting_.place, kMeetOffset,
-                                              groundZ_ + options_.meetHeight);
+  // Right above the station's corner: UAVs hover about 4.5 m up there, within the 5 m link of a
+  // station on the ground (1 m off the corner they were out of range).
+  const Vec3 meetingPlace(stationMeeting_.place.x(), stationMeeting_.place.y(),
+                          groundZ_ + options_.meetHeight);
 
   // The station's reply ends a meeting.
   for (const auto& message : view.messages) {

@@ -56,8 +56,8 @@ class MeetingCounter {
   size_t units_;
   double gap_;
   bool first_ = true;
-  std::vector<uint8_t> linked_;    // the previous update, units_ x units_
-  std::vector<double> lostSince_;  // when each pair's link went down (-inf: never linked)
+  LinkMatrix previous_;            // the links at the previous update
+  std::vector<double> lostSince_;  // per pair (a * units + b): when its link went down
 };
 
 }  // namespace coinspect::comms

@@ -45,8 +45,7 @@ struct SleiOptions {
   double handoutPeriod = 5.0;     // s between hand-out decisions (SOEI's period)
   double meetingGrace = 10.0;     // s: a meeting partner later than this is given up (delta)
   double inspectPatience = 12.0;  // s at a feature's pose without its inspection: skip it
-  bool evenSplit = true;          // inspectors per subgroup: even, or by first-box volume
-  PlanOptions plan;
+  PlanOptions plan;               // the station's first plan (even split, corners, its speed)
 };
 
 class Slei3dStrategy : public agent::Strategy {
