@@ -20,12 +20,6 @@ int dominantAxis(const Vec3& normal) {
   return 2 * axis + (normal[axis] < 0.0 ? 1 : 0);
 }
 
-// Rays end just outside the patch's voxel face, so neighbouring surface voxels grazed by an
-// oblique ray do not hide the patch, while anything in front of the surface still does.
-Vec3 faceOf(const mapping::VoxelGrid& grid, const InspectionPatch& patch) {
-  return patch.centre + 0.55 * grid.resolution() * patch.normal;
-}
-
 bool safeCamera(const mapping::VoxelGrid& grid, const Vec3& camera, const CoverageOptions& o) {
   if (camera.z() < o.groundZ + o.minHeight) return false;
   const Index3 cell = grid.cellOf(camera);
@@ -43,7 +37,7 @@ bool placeCamera(const mapping::VoxelGrid& grid, const InspectionPatch& patch,
     for (const double scale : {1.0, 0.85, 0.7, 1.15}) {
       const Vec3 candidate = patch.centre + scale * o.distance * direction;
       if (safeCamera(grid, candidate, o) &&
-          lineOfSight(grid, candidate, faceOf(grid, patch), o.unknownHides)) {
+          lineOfSight(grid, candidate, patchFace(grid, patch), o.unknownHides)) {
         *camera = candidate;
         return true;
       }
@@ -58,10 +52,14 @@ bool covers(const mapping::VoxelGrid& grid, const Vec3& camera, const Vec3& axis
   if (distance > o.maxDistance || distance < 1e-6) return false;
   if (patch.normal.dot(toCamera) < std::cos(o.maxIncidence) * distance) return false;
   if (axis.dot(-toCamera) < std::cos(o.halfFov) * distance) return false;
-  return lineOfSight(grid, camera, faceOf(grid, patch), o.unknownHides);
+  return lineOfSight(grid, camera, patchFace(grid, patch), o.unknownHides);
 }
 
 }  // namespace
+
+Vec3 patchFace(const mapping::VoxelGrid& grid, const InspectionPatch& patch) {
+  return patch.centre + 0.55 * grid.resolution() * patch.normal;
+}
 
 bool isGroundSurface(const mapping::SurfaceVoxel& voxel, double groundZ, double resolution) {
   return voxel.normal.z() > 0.8 && voxel.centre.z() <= groundZ + 1.25 * resolution;
@@ -137,6 +135,44 @@ bool lineOfSight(const mapping::VoxelGrid& grid, const Vec3& a, const Vec3& b, b
   return true;
 }
 
+std::vector<std::pair<uint32_t, std::vector<uint32_t>>> greedyCover(
+    const std::vector<std::vector<uint32_t>>& sees, const std::vector<InspectionPatch>& patches) {
+  // Lazy greedy set cover, weighted by patch weight; ties go to the lower candidate index.
+  std::vector<char> covered(patches.size(), 0);
+  const auto gain = [&](const std::vector<uint32_t>& seen) {
+    uint64_t total = 0;
+    for (const uint32_t j : seen)
+      if (!covered[j]) total += patches[j].weight;
+    return total;
+  };
+  using Entry = std::pair<uint64_t, uint32_t>;  // (gain, -index) ordering below
+  const auto worse = [](const Entry& a, const Entry& b) {
+    return a.first != b.first ? a.first < b.first : a.second > b.second;
+  };
+  std::priority_queue<Entry, std::vector<Entry>, decltype(worse)> queue(worse);
+  for (uint32_t c = 0; c < sees.size(); ++c)
+    queue.push({gain(sees[c]), c});
+  std::vector<std::pair<uint32_t, std::vector<uint32_t>>> out;
+  while (!queue.empty()) {
+    const auto [stale, c] = queue.top();
+    queue.pop();
+    const uint64_t fresh = gain(sees[c]);
+    if (fresh == 0) continue;
+    if (fresh < stale) {
+      queue.push({fresh, c});
+      continue;
+    }
+    std::vector<uint32_t> newly;
+    for (const uint32_t j : sees[c])
+      if (!covered[j]) {
+        covered[j] = 1;
+        newly.push_back(j);
+      }
+    out.emplace_back(c, std::move(newly));
+  }
+  return out;
+}
+
 std::vector<CoverageView> coverPatches(const std::vector<InspectionPatch>& patches,
                                        const mapping::VoxelGrid& grid,
                                        const CoverageOptions& options,
@@ -178,38 +214,16 @@ std::vector<CoverageView> coverPatches(const std::vector<InspectionPatch>& patch
     if (!candidate.sees.empty()) candidates.push_back(std::move(candidate));
   }
 
-  // Lazy greedy set cover, weighted by patch weight; ties go to the lower candidate index.
-  std::vector<char> covered(n, 0);
-  const auto gain = [&](const Candidate& c) {
-    uint64_t total = 0;
-    for (const uint32_t j : c.sees)
-      if (!covered[j]) total += patches[j].weight;
-    return total;
-  };
-  using Entry = std::pair<uint64_t, uint32_t>;  // (gain, -index) ordering below
-  const auto worse = [](const Entry& a, const Entry& b) {
-    return a.first != b.first ? a.first < b.first : a.second > b.second;
-  };
-  std::priority_queue<Entry, std::vector<Entry>, decltype(worse)> queue(worse);
-  for (uint32_t c = 0; c < candidates.size(); ++c)
-    queue.push({gain(candidates[c]), c});
+  std::vector<std::vector<uint32_t>> sees;
+  sees.reserve(candidates.size());
+  for (const auto& candidate : candidates)
+    sees.push_back(candidate.sees);
   std::vector<CoverageView> out;
-  while (!queue.empty()) {
-    const auto [stale, c] = queue.top();
-    queue.pop();
-    const uint64_t fresh = gain(candidates[c]);
-    if (fresh == 0) continue;
-    if (fresh < stale) {
-      queue.push({fresh, c});
-      continue;
-    }
-    CoverageView viewpoint{candidates[c].camera, candidates[c].target, {}};
-    for (const uint32_t j : candidates[c].sees)
-      if (!covered[j]) {
-        covered[j] = 1;
-        viewpoint.covered.push_back(j);
-      }
-    out.push_back(std::move(viewpoint));
+  std::vector<char> covered(n, 0);
+  for (auto& [c, newly] : greedyCover(sees, patches)) {
+    for (const uint32_t j : newly)
+      covered[j] = 1;
+    out.push_back({candidates[c].camera, candidates[c].target, std::move(newly)});
   }
   if (uncoverable) {
     uncoverable->clear();

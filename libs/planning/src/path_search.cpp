@@ -482,4 +482,25 @@ PathResult findPathThetaStar(const VoxelGrid& grid, const Vec3& start, const Vec
   return searcher.thetaStar(grid, start, goal, options);
 }
 
+std::vector<uint8_t> reachableCells(const VoxelGrid& grid, const Vec3& start,
+                                    const PathSearchOptions& options) {
+  std::vector<uint8_t> reached(grid.cellCount(), 0);
+  Index3 first;
+  if (!nearestTraversableCell(grid, start, options.snapRadius, options, &first)) return reached;
+  std::vector<Index3> queue{first};
+  reached[grid.linear(first)] = 1;
+  static const Index3 kFaces[6] = {Index3(1, 0, 0),  Index3(-1, 0, 0), Index3(0, 1, 0),
+                                   Index3(0, -1, 0), Index3(0, 0, 1),  Index3(0, 0, -1)};
+  for (size_t head = 0; head < queue.size(); ++head)
+    for (const Index3& face : kFaces) {
+      const Index3 next = queue[head] + face;
+      if (!grid.contains(next) || reached[grid.linear(next)] ||
+          !cellTraversable(grid, next, options))
+        continue;
+      reached[grid.linear(next)] = 1;
+      queue.push_back(next);
+    }
+  return reached;
+}
+
 }  // namespace coinspect::planning

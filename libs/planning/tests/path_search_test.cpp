@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -174,6 +175,37 @@ TEST(PathSearch, AStarAndThetaStarAgainstBruteForceDijkstra) {
     }
   EXPECT_GT(found, checked / 2);  // the random grids must mostly be solvable to test anything
   EXPECT_GT(thetaShorter, found / 2);
+}
+
+// reachableCells marks exactly the cells the brute-force Dijkstra (26-connected, no corner
+// cutting) reaches from the start.
+TEST(PathSearch, ReachableCellsAreThoseASearchReaches) {
+  int reachable = 0, unreachable = 0;
+  for (uint64_t seed = 1; seed <= 6; ++seed) {
+    PathSearchOptions o;
+    o.clearance = seed % 2 ? 0.0 : 0.5;
+    o.snapRadius = 0;
+    const VoxelGrid grid = randomGrid(seed, 0.25, 0.1, true);
+    Rng rng(seed * 31 + 1);
+    Index3 s;
+    do {
+      s = Index3(rng.below(14), rng.below(11), rng.below(6));
+    } while (!oracleTraversable(grid, s, o));
+    const auto best = dijkstra(grid, s, o);
+    const auto reached = reachableCells(grid, grid.centre(s), o);
+    ASSERT_EQ(reached.size(), grid.cellCount());
+    for (size_t i = 0; i < best.size(); ++i) {
+      EXPECT_EQ(reached[i] != 0, best[i] < kInf) << "seed " << seed << " cell " << i;
+      (best[i] < kInf ? reachable : unreachable) += 1;
+    }
+  }
+  EXPECT_GT(reachable, 100);  // both kinds must occur for the comparison to mean anything
+  EXPECT_GT(unreachable, 100);
+  // A start with no traversable cell within the snap radius reaches nothing.
+  VoxelGrid solid(Vec3::Zero(), 1.0, Index3(4, 4, 4), CellState::Occupied);
+  solid.computeClearance(2.0, true);
+  const auto none = reachableCells(solid, Vec3(2, 2, 2), PathSearchOptions{});
+  EXPECT_TRUE(std::all_of(none.begin(), none.end(), [](uint8_t r) { return r == 0; }));
 }
 
 VoxelGrid wallGrid() {

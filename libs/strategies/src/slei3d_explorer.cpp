@@ -3,8 +3,9 @@
 #include <cmath>
 #include <limits>
 
-#include "coinspect/planning/coverage.h"
+#include "coinspect/planning/detection_coverage.h"
 #include "coinspect/planning/meeting_decision.h"
+#include "coinspect/planning/path_search.h"
 #include "coinspect/planning/slei_schedule.h"
 #include "coinspect/strategies/runtime/box_geometry.h"
 #include "coinspect/strategies/slei/slei3d_strategy.h"
@@ -14,7 +15,14 @@ namespace coinspect::strategies::slei {
 
 namespace {
 
-constexpr double kReplanPeriod = 2.0;       // s between exploration plans while flying
+constexpr double kReplanPeriod = 15.0;      // s between sweep plans (the map grows meanwhile)
+constexpr double kStationAntenna = 0.5;     // m above the ground, a station's link end
+constexpr double kApproachReach = 4.5;      // m: within the 5 m link with a margin
+constexpr double kApproachRetry = 3.0;      // s between approaches after a failed flight
+constexpr double kEarlyPatience = 30.0;     // s past the expected time at an early stop
+constexpr double kLostFor = 60.0;           // s an inspector missed twice is not looked for
+constexpr double kMaxHandoutWait = 15.0;    // s an explorer may plan to wait for an inspector
+constexpr double kTurnTime = 1.5;           // s at a sweep stop for the heading to come round
 constexpr double kSurfaceNearBox = 1.0;     // m: mapped surface this close to the box is its own
 constexpr double kPatchSize = 2.0;          // m, surface patches the detector sweeps
 constexpr size_t kPatchesPerPlan = 300;     // nearest open patches a plan covers
@@ -45,10 +53,9 @@ planning::InspectorPlan Slei3dStrategy::predictedPlan(const InspectorModel& mode
     t = plan.poses.back().end;
     at = task.viewPosition;
   }
-  if (plan.poses.empty())
-    plan.poses.push_back({at, t, planning::kOpenWindowEnd});
-  else
-    plan.poses.back().end = planning::kOpenWindowEnd;  // it stays at its last pose
+  // Then it goes to its wait point and stays there.
+  const double home = std::max(now, t + straightTime(at, model.home, options_.speed));
+  plan.poses.push_back({model.home, home, planning::kOpenWindowEnd});
   return plan;
 }
 
@@ -60,7 +67,10 @@ void Slei3dStrategy::enterBox(const agent::AgentView& view, int32_t box) {
   inspectedInBox_ = 0;
   boxFeatures_.clear();
   sweptInBox_ = 0;
-  sweeping_.clear();
+  openList_.clear();
+  sweepRoute_.clear();
+  atStopSince_ = -1.0;
+  toFrontier_ = false;
   openPatches_ = 0;
   unreachable_.clear();
   exploreAim_.reset();
@@ -108,6 +118,7 @@ void Slei3dStrategy::readStatus(const agent::AgentView& view) {
       for (const auto& n : view.neighbours)
         if (n.name == message.from) model.position = n.odometry.position;
       model.since = view.time;
+      model.lostUntil = 0.0;  // in contact: found
       model.tasks.erase(
           std::remove_if(model.tasks.begin(), model.tasks.end(),
                          [&](const FeatureTask& t) { return reportedInspected_.count(t.id) > 0; }),
@@ -127,35 +138,50 @@ bool Slei3dStrategy::planExploration(const agent::AgentView& view) {
   for (const auto& patch :
        planning::groupSurface(map_->surfaceNearBoxes({box}, kSurfaceNearBox), kPatchSize))
     if (!swept_.count(patch.key)) open.push_back(patch);
-  openPatches_ = open.size();
+  openPatches_ = 0;
   if (open.size() > kPatchesPerPlan) {
     std::stable_sort(open.begin(), open.end(), [&](const auto& a, const auto& b) {
       return (a.centre - here).squaredNorm() < (b.centre - here).squaredNorm();
     });
     open.resize(kPatchesPerPlan);
   }
+  openList_ = open;
+  sweepRoute_.clear();
+  atStopSince_ = -1.0;
+  toFrontier_ = false;
   if (!open.empty()) {
-    planning::CoverageOptions coverage;
-    coverage.distance = options_.sweepDistance;
-    coverage.maxDistance = options_.sweepDistance + 1.0;
-    coverage.unknownHides = false;  // mapped surface: rays reached it through that space
-    coverage.halfFov = 0.6;         // inside the detector's +-45 deg x +-30 deg
+    planning::DetectionCoverageOptions coverage;
+    coverage.standoffs = {std::max(1.0, options_.sweepDistance - 1.0), options_.sweepDistance};
     coverage.clearance = clearance;
     coverage.minHeight = 1.0;
     coverage.groundZ = groundZ_;
+    // Only places a search can reach: a goal walled off costs a whole search budget per try.
+    const auto reachable = planning::reachableCells(grid, here, flight_->searchOptions(grid));
+    coverage.reachable = &reachable;
     // Patches without a safe viewpoint now may get one as the map grows: they stay open, and
     // the box counts as explored when no open patch and no frontier has a viewpoint.
-    const auto views = planning::coverPatches(open, grid, coverage);
-    if (!views.empty()) {
-      const auto nearest =
+    std::vector<uint32_t> uncoverable;
+    auto views = planning::detectionViews(open, grid, coverage, &uncoverable);
+    // Only patches with a viewpoint count as left to sweep (eq. 9's explored share): a box
+    // with surface no safe place sees would never look explored.
+    openPatches_ = open.size() - uncoverable.size();
+    // Flown nearest first from where the explorer is (a greedy tour).
+    Vec3 from = here;
+    while (!views.empty()) {
+      const auto next =
           std::min_element(views.begin(), views.end(), [&](const auto& a, const auto& b) {
-            return (a.camera - here).squaredNorm() < (b.camera - here).squaredNorm();
+            return (a.position - from).squaredNorm() < (b.position - from).squaredNorm();
           });
-      sweeping_.clear();
-      for (const uint32_t i : nearest->covered)
-        sweeping_.push_back(open[i].key);
-      exploreAim_ = nearest->target;
-      flight_->goTo(nearest->camera, options_.speed);
+      SweepStop stop{next->position, next->target, {}};
+      for (const uint32_t i : next->covered)
+        stop.keys.push_back(open[i].key);
+      from = next->position;
+      sweepRoute_.push_back(std::move(stop));
+      views.erase(next);
+    }
+    if (!sweepRoute_.empty()) {
+      exploreAim_ = sweepRoute_.front().target;
+      flight_->goTo(sweepRoute_.front().position, options_.speed);
       return true;
     }
   }
@@ -179,12 +205,104 @@ bool Slei3dStrategy::planExploration(const agent::AgentView& view) {
   for (const auto* cluster : order) {
     const auto viewpoint = star::bestRingViewpoint(*cluster, grid, ring);
     if (!viewpoint) continue;
-    sweeping_.clear();
+    toFrontier_ = true;
     exploreAim_ = cluster->centroid;
     flight_->goTo(viewpoint->pose.position, options_.speed);
     return true;
   }
   return false;
+}
+
+// The stop of the station's schedule where the explorer, flying there now, would find the
+// station soonest; none when that is not well before the explorer's own meeting. The station
+// drives straight to its next stop after each meeting (it was where this explorer met it at the
+// last reply) and leaves a stop once its meeting is held, about the stop's time.
+std::optional<Vec3> Slei3dStrategy::earlyStop(const agent::AgentView& view, double* by) const {
+  constexpr double kWorthIt = 20.0;  // s saved at least
+  constexpr double kService = 10.0;  // s a meeting holds the station (as the station plans)
+  const Vec3 here = view.odometry.position;
+  const auto drive = [&](const Vec3& a, const Vec3& b) {
+    return std::hypot(a.x() - b.x(), a.y() - b.y()) / options_.plan.stationSpeed;
+  };
+  std::optional<Vec3> best;
+  double soonest = stationMeeting_.time - kWorthIt;
+  double free = lastReply_.time;  // when the station can leave for the next stop
+  Vec3 from = lastReply_.place;
+  for (const auto& stop : stationStops_) {
+    const double arrives = free + drive(from, stop.place);
+    const bool own = stop.time >= stationMeeting_.time;
+    const double at = std::max(arrives, view.time + straightTime(here, stop.place, options_.speed));
+    if ((own || at <= stop.time) && at < soonest) soonest = *by = at, best = stop.place;
+    if (own) break;
+    free = std::max(arrives, stop.time) + kService;
+    from = stop.place;
+  }
+  return best;
+}
+
+// Where to wait for the station at `place`: the flyable point nearest to a station standing
+// there, in line of sight of it (straight above the corner, an explorer kept clear of a nearby
+// structure hovered 5.4 m from the station, beyond the 5 m link); above the place when the map
+// offers nothing within the link's reach.
+void Slei3dStrategy::goToStation(const agent::AgentView& view, const Vec3& place) {
+  lastApproach_ = view.time;
+  const auto& grid = map_->grid();
+  const auto reachable =
+      planning::reachableCells(grid, view.odometry.position, flight_->searchOptions(grid));
+  const Vec3 station(place.x(), place.y(), groundZ_ + kStationAntenna);
+  Vec3 best(place.x(), place.y(), groundZ_ + options_.meetHeight);
+  double bestDistance = kApproachReach;
+  const double step = grid.resolution();
+  const int r = static_cast<int>(std::ceil(kApproachReach / step));
+  const auto centre = grid.cellOf(station);
+  for (int dz = 0; dz <= r; ++dz)
+    for (int dy = -r; dy <= r; ++dy)
+      for (int dx = -r; dx <= r; ++dx) {
+        const mapping::Index3 cell = centre + mapping::Index3(dx, dy, dz);
+        if (!grid.contains(cell) || !reachable[grid.linear(cell)]) continue;
+        const Vec3 p = grid.centre(cell);
+        const double d = (p - station).norm();
+        if (d < bestDistance && planning::lineOfSight(grid, p, station, false))
+          bestDistance = d, best = p;
+      }
+  flight_->goTo(best, options_.speed);
+}
+
+// Every open patch the detector passes over counts as swept, on the way to a stop as well.
+void Slei3dStrategy::markSwept(const agent::AgentView& view) {
+  const planning::DetectorModel detector;
+  const auto& grid = map_->grid();
+  for (const auto& patch : openList_)
+    if (!swept_.count(patch.key) &&
+        planning::detects(detector, grid, view.odometry.position, view.odometry.yaw, patch,
+                          false) &&
+        swept_.insert(patch.key).second)
+      ++sweptInBox_;
+}
+
+// The sweep route: a stop is passed when all its patches are swept, or given up after the
+// heading had time to come round at it (or when the flight there fails); the next stop follows
+// without a halt.
+void Slei3dStrategy::followSweep(const agent::AgentView& view) {
+  if (sweepRoute_.empty()) return;
+  auto& stop = sweepRoute_.front();
+  const bool swept = std::all_of(stop.keys.begin(), stop.keys.end(),
+                                 [&](uint64_t key) { return swept_.count(key) > 0; });
+  if (!swept && flight_->done() && atStopSince_ < 0.0) atStopSince_ = view.time;
+  const bool givenUp =
+      flight_->failed() || (atStopSince_ >= 0.0 && view.time - atStopSince_ >= kTurnTime);
+  if (!swept && !givenUp) return;
+  for (const uint64_t key : stop.keys)
+    if (swept_.insert(key).second) ++sweptInBox_;
+  sweepRoute_.erase(sweepRoute_.begin());
+  atStopSince_ = -1.0;
+  if (sweepRoute_.empty()) {
+    exploreAim_.reset();
+    flight_->hover();
+    return;
+  }
+  exploreAim_ = sweepRoute_.front().target;
+  flight_->goTo(sweepRoute_.front().position, options_.speed);
 }
 
 // Eq. 9 (planning::predictCompletion): from the explored share of the box and the features
@@ -195,7 +313,9 @@ double Slei3dStrategy::predictRemaining(const agent::AgentView& view) const {
   std::vector<Vec3> ends;
   for (const auto& model : inspectors_) {
     const auto plan = predictedPlan(model, view.time);
-    const double end = model.tasks.empty() ? view.time : plan.poses.back().start + kInspectionTime;
+    // The last pose is its wait point; the one before, its last feature.
+    const double end =
+        model.tasks.empty() ? view.time : plan.poses[plan.poses.size() - 2].start + kInspectionTime;
     latest = std::max(latest, end);
     earliest = std::min(earliest, end);
     ends.push_back(plan.poses.back().position);
@@ -217,6 +337,7 @@ double Slei3dStrategy::predictRemaining(const agent::AgentView& view) const {
   in.now = view.time;
   planning::CompletionPredictionOptions options;
   options.explorerSpeed = options_.speed;
+  options.maxRemaining = std::max(options.minRemaining, options_.maxMeetingLead);
   return planning::predictCompletion(in, options).remaining;
 }
 
@@ -225,12 +346,21 @@ double Slei3dStrategy::predictRemaining(const agent::AgentView& view) const {
 void Slei3dStrategy::planHandout(const agent::AgentView& view) {
   lastHandout_ = view.time;
   if (inspectors_.empty() || !handouts_.empty()) return;
-  const bool notices = std::any_of(inspectors_.begin(), inspectors_.end(),
-                                   [](const InspectorModel& m) { return m.waitAt.has_value(); });
+  // Inspectors missed twice in a row are left out for a while: the explorer does not know
+  // where they are, and looking for them again and again kept it from exploring for minutes.
+  const auto reachable = [&](const InspectorModel& m) { return m.lostUntil <= view.time; };
+  const bool notices =
+      std::any_of(inspectors_.begin(), inspectors_.end(),
+                  [&](const InspectorModel& m) { return m.waitAt.has_value() && reachable(m); });
   planning::MeetingProblem problem;
   problem.explorer = {view.odometry.position, view.time};
-  for (const auto& model : inspectors_)
-    problem.inspectors.push_back(predictedPlan(model, view.time));
+  std::vector<size_t> modelOf;  // problem.inspectors[i] is inspectors_[modelOf[i]]
+  for (size_t k = 0; k < inspectors_.size(); ++k)
+    if (reachable(inspectors_[k])) {
+      modelOf.push_back(k);
+      problem.inspectors.push_back(predictedPlan(inspectors_[k], view.time));
+    }
+  if (problem.inspectors.empty()) return;
   for (size_t i = 0; i < pending_.size(); ++i)
     problem.features.push_back(
         {static_cast<int64_t>(i), pending_[i].position, pending_[i].viewPosition});
@@ -246,10 +376,32 @@ void Slei3dStrategy::planHandout(const agent::AgentView& view) {
     const auto space =
         planning::voxelGridMeetingSpace(map_->grid(), flight_->requiredClearance(map_->grid()));
     const auto decision = planning::decideMeetings(problem, box, space, options);
-    if (decision.choice != planning::MeetingChoice::Meet) return;
+    if (decision.choice == planning::MeetingChoice::NoFeasibleMeeting &&
+        problem.explorationFinished) {
+      // No sampled meeting point anywhere (the reference would meet at the pose itself): all
+      // of it to the inspector free soonest, met where its plan ends.
+      size_t first = 0;
+      for (size_t i = 1; i < problem.inspectors.size(); ++i)
+        if (problem.inspectors[i].poses.back().start < problem.inspectors[first].poses.back().start)
+          first = i;
+      Handout handout;
+      handout.inspector = modelOf[first];
+      handout.place = problem.inspectors[first].poses.back().position;
+      handout.time = problem.inspectors[first].poses.back().start;
+      handout.orders.tasks = pending_;
+      planned.push_back(std::move(handout));
+    }
+    if (decision.choice != planning::MeetingChoice::Meet && planned.empty()) return;
+    // The inspectors' windows are predictions, and real flights run late: a meeting the
+    // explorer would wait long for (the inspector finishing a long list first) waits while
+    // exploring remains; a later decision hands the features out.
+    const bool longWait =
+        std::any_of(decision.meetings.begin(), decision.meetings.end(),
+                    [](const auto& m) { return m.meetingTime - m.arrival > kMaxHandoutWait; });
+    if (longWait && !problem.explorationFinished) return;
     for (const auto& meeting : decision.meetings) {
       Handout handout;
-      handout.inspector = static_cast<size_t>(meeting.inspector);
+      handout.inspector = modelOf[static_cast<size_t>(meeting.inspector)];
       handout.place = meeting.point;
       handout.time = meeting.meetingTime;
       for (const int64_t i : meeting.featureIds)
@@ -259,7 +411,7 @@ void Slei3dStrategy::planHandout(const agent::AgentView& view) {
   } else if (notices) {
     // Nothing to hand out, but a new box to announce: meet each inspector where it stays.
     for (size_t k = 0; k < inspectors_.size(); ++k) {
-      if (!inspectors_[k].waitAt) continue;
+      if (!inspectors_[k].waitAt || !reachable(inspectors_[k])) continue;
       const auto plan = predictedPlan(inspectors_[k], view.time);
       Handout handout;
       handout.inspector = k;
@@ -301,17 +453,18 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
     }
     stationMeeting_ = subgroup->firstMeeting;
     enterBox(view, subgroup->box);
-    for (auto& model : inspectors_)
-      model.waitAt.reset();  // they compute the first one from the plan themselves
+    // They compute the first wait point from the plan themselves.
+    for (size_t k = 0; k < inspectors_.size(); ++k) {
+      inspectors_[k].waitAt.reset();
+      if (subgroup->box >= 0) inspectors_[k].home = firstWaitPoint(*subgroup, k);
+    }
   }
   collectDetections(view);
   readStatus(view);
   agent::AgentCommand command;
   const Vec3 here = view.odometry.position;
-  // Right above the station's corner: UAVs hover about 4.5 m up there, within the 5 m link of a
-  // station on the ground (1 m off the corner they were out of range).
-  const Vec3 meetingPlace(stationMeeting_.place.x(), stationMeeting_.place.y(),
-                          groundZ_ + options_.meetHeight);
+  const Vec3 stationPlace = earlyPlace_ ? *earlyPlace_ : stationMeeting_.place;
+  const Vec3 meetingPlace(stationPlace.x(), stationPlace.y(), groundZ_ + options_.meetHeight);
 
   // The station's reply ends a meeting.
   for (const auto& message : view.messages) {
@@ -320,6 +473,10 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
     if (!reply || reply->meetingNumber != meetingNumber_) continue;
     ++meetingNumber_;
     stationMeeting_ = reply->next;
+    stationStops_ = reply->stops;
+    lastReply_ = {here, view.time};
+    earlyPlace_.reset();
+    earlyTried_ = false;
     if (reply->box != box_) {
       enterBox(view, reply->box);
     } else {
@@ -328,6 +485,17 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
     }
   }
 
+  // Done early: catch the station at one of its stops rather than wait for the meeting.
+  const bool boxDone = box_ >= 0 && explorationFinished_ && pending_.empty() && handouts_.empty();
+  if (boxDone && (phase_ == ExplorerPhase::Exploring || phase_ == ExplorerPhase::Done) &&
+      !earlyPlace_ && !earlyTried_) {
+    earlyTried_ = true;  // once per reply: the schedule it knows grows stale
+    earlyPlace_ = earlyStop(view, &earlyBy_);
+    if (earlyPlace_) {
+      phase_ = ExplorerPhase::ToStation;
+      goToStation(view, *earlyPlace_);
+    }
+  }
   // Time to leave for the station? Planned hand-outs wait: their features go back to pending.
   const bool busyAway = phase_ == ExplorerPhase::ToBox || phase_ == ExplorerPhase::Exploring ||
                         phase_ == ExplorerPhase::ToInspector || phase_ == ExplorerPhase::Done;
@@ -338,7 +506,7 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
       pending_.insert(pending_.begin(), handout.orders.tasks.begin(), handout.orders.tasks.end());
     handouts_.clear();
     phase_ = ExplorerPhase::ToStation;
-    flight_->goTo(meetingPlace, options_.speed);
+    goToStation(view, stationPlace);
   }
 
   const auto station = std::find_if(unit_.fleet.begin(), unit_.fleet.end(), [](const auto& m) {
@@ -349,7 +517,15 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
   switch (phase_) {
     case ExplorerPhase::ToStation:
     case ExplorerPhase::AtStation: {
-      if (flight_->failed()) flight_->goTo(meetingPlace + Vec3(0, 0, 1.5), options_.speed);
+      // The station did not come to the early stop (its schedule changed since the explorer
+      // learnt it): on to the planned meeting place.
+      if (earlyPlace_ && phase_ == ExplorerPhase::ToStation &&
+          view.time > earlyBy_ + kEarlyPatience) {
+        earlyPlace_.reset();
+        goToStation(view, stationMeeting_.place);
+      }
+      if (flight_->failed() && view.time - lastApproach_ >= kApproachRetry)
+        goToStation(view, stationPlace);
       if (station != unit_.fleet.end() && neighbour(view, stationIndex)) {
         phase_ = ExplorerPhase::AtStation;
         if (view.time - lastSend_ >= kReportPeriod) {
@@ -376,12 +552,25 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
           model.tasks.push_back(task);
           command.assignedFeatures.push_back(task.id);
         }
-        if (handout.orders.waitAt) model.waitAt.reset();
+        model.missed = 0;
+        if (handout.orders.waitAt) {
+          model.home = *handout.orders.waitAt;  // it goes there once its list is done
+          model.waitAt.reset();
+        }
         over = true;
       } else if (view.time > handout.time + options_.meetingGrace || flight_->failed()) {
         // Not met in time (or no way there): the features go back to the pending list, and the
-        // orders are sent again next time (same sequence number).
+        // orders are sent again next time (same sequence number). The inspector was not where
+        // its plan said: it is presumed at its wait point, where it goes when it finds no way
+        // to a pose (sampling the same wrong place again failed for the rest of a run).
         --model.sequence;
+        model.position = model.home;
+        model.since = view.time;
+        model.tasks.clear();
+        if (++model.missed >= 2) {
+          model.missed = 0;
+          model.lostUntil = view.time + kLostFor;
+        }
         pending_.insert(pending_.begin(), handout.orders.tasks.begin(), handout.orders.tasks.end());
         flight_->hover();
         over = true;
@@ -411,18 +600,18 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
       command.activity = agent::Activity::Exploring;
       break;
     case ExplorerPhase::Exploring: {
-      // A viewpoint reached (or given up) sweeps its patches; a frontier cluster flown to is
-      // not chosen again: if its frontier is still there, another viewpoint will not do better
-      // soon.
-      if (flight_->failed() || (flight_->done() && exploreAim_)) {
-        if (sweeping_.empty() && exploreAim_) unreachable_.push_back(*exploreAim_);
-        for (const uint64_t key : sweeping_)
-          if (swept_.insert(key).second) ++sweptInBox_;
-        sweeping_.clear();
+      markSwept(view);
+      followSweep(view);
+      // A frontier cluster flown to (or given up) is not chosen again: if its frontier is still
+      // there, another viewpoint will not do better soon.
+      if (toFrontier_ && (flight_->failed() || flight_->done())) {
+        if (exploreAim_) unreachable_.push_back(*exploreAim_);
+        toFrontier_ = false;
         exploreAim_.reset();
         flight_->hover();
       }
-      const bool due = view.time - lastPlan_ >= (flight_->done() ? 0.5 : kReplanPeriod);
+      const bool idle = sweepRoute_.empty() && !toFrontier_;
+      const bool due = view.time - lastPlan_ >= (idle ? 0.5 : kReplanPeriod);
       if (!explorationFinished_ && due && !planExploration(view) && flight_->done())
         explorationFinished_ = true;  // no open patch nor frontier with a viewpoint
       aim = exploreAim_;

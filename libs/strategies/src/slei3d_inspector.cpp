@@ -10,6 +10,7 @@ namespace coinspect::strategies::slei {
 namespace {
 
 constexpr double kStatusPeriod = 1.0;  // s between status messages while the explorer is near
+constexpr double kRetryWait = 20.0;    // s before trying again to reach a wait point
 
 }  // namespace
 
@@ -33,10 +34,11 @@ agent::AgentCommand Slei3dStrategy::decideInspector(const agent::AgentView& view
       if (!inspected_.count(task.id)) tasks_.push_back(task);
     if (orders->waitAt) afterList_ = orders->waitAt;
   }
-  // Off the list: inspected, waited for too long at its pose, or no way there. The inspector
-  // stays at the last pose it flew to (its explorer plans to find it there).
+  // Off the list: inspected, waited for too long at its pose, or no way there. With nothing
+  // left the inspector goes to its wait point, which its explorer knows: an explorer that
+  // planned to meet it at its last pose missed it whenever that pose was not where the
+  // inspector ended up (a pose it found no way to, or a stale report of where it was).
   const auto drop = [&] {
-    waitAt_ = tasks_.front().viewPosition;
     tasks_.erase(tasks_.begin());
     atTaskSince_.reset();
   };
@@ -62,7 +64,13 @@ agent::AgentCommand Slei3dStrategy::decideInspector(const agent::AgentView& view
     aim = task.position;
     command.activity = agent::Activity::Inspecting;
   } else {
-    if (waitAt_) flight_->goTo(*waitAt_, options_.speed);
+    // A wait point it finds no way to is tried again only now and then (every try is a whole
+    // path search budget); it hovers where it is meanwhile.
+    if (flight_->failed() && !flight_->done()) {
+      flight_->hover();
+      retryWaitAt_ = view.time + kRetryWait;
+    }
+    if (waitAt_ && view.time >= retryWaitAt_) flight_->goTo(*waitAt_, options_.speed);
     command.activity = agent::Activity::Waiting;
   }
 

@@ -9,12 +9,18 @@ namespace coinspect::strategies::slei {
 
 namespace {
 
-constexpr double kNoMeeting = 1e300;  // Reply::next.time when the explorer has nothing left
-constexpr double kArrived = 0.5;      // m from a meeting place that counts as there
-constexpr double kMinRemaining = 50.0, kMaxRemaining = 600.0;  // s (the reference's clamps)
-constexpr double kNewBoxLead = 60.0;   // s to the first meeting in a new box (the reference)
-constexpr double kPresumedLost = 6.0;  // meeting graces after its time: the explorer is lost
-constexpr double kService = 10.0;      // s a meeting holds the station
+constexpr double kNoMeeting = 1e300;      // Reply::next.time when the explorer has nothing left
+constexpr double kArrived = 0.5;          // m from a meeting place that counts as there
+constexpr double kMinRemaining = 50.0;    // s (the reference's floor)
+constexpr double kNewBoxLead = 60.0;      // s to the first meeting in a new box (the reference)
+constexpr double kPresumedLost = 6.0;     // meeting graces after its time: the explorer is lost
+constexpr double kService = 10.0;         // s a meeting holds the station
+constexpr double kGroundCell = 0.5;       // m, the station's ground grid
+constexpr double kGroundMargin = 15.0;    // m around the boxes that the grid covers
+constexpr double kGroundClearance = 0.5;  // m kept from a box's footprint beyond its radius
+constexpr double kStuckDistance = 0.2;    // m: moved less than this ...
+constexpr double kStuckTime = 3.0;        // s ... for this long while driving: blocked
+constexpr double kBlockAhead = 0.8, kBlockRadius = 0.7;  // m: the ground it then blocks
 
 }  // namespace
 
@@ -58,7 +64,8 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
     Reply reply;
     reply.meetingNumber = report->meetingNumber;
     reply.box = report->box;
-    double lead = std::clamp(report->remaining, kMinRemaining, kMaxRemaining);
+    double lead = std::clamp(report->remaining, kMinRemaining,
+                             std::max(kMinRemaining, options_.maxMeetingLead));
     if (report->boxFinished && report->box >= 0) {
       // Rolling assignment: the free box nearest the finished one, for the whole subgroup.
       reply.box =
@@ -81,13 +88,15 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
                                         : here;
       reply.next = {place, view.time + lead};
     }
-    answered_[explorer] = reply;
-    send(command, explorer, kReplyTopic, encode(reply));
     schedule_.erase(std::remove_if(schedule_.begin(), schedule_.end(),
                                    [&](const StationMeeting& m) { return m.explorer == explorer; }),
                     schedule_.end());
     if (reply.next.time < kNoMeeting) schedule_.push_back({explorer, reply.next});
     orderSchedule(view);
+    for (const auto& stop : schedule_)
+      reply.stops.push_back(stop.meeting);
+    answered_[explorer] = reply;
+    send(command, explorer, kReplyTopic, encode(reply));
   }
 }
 
@@ -118,12 +127,61 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
   }
   const double distance =
       std::hypot(next.meeting.place.x() - here.x(), next.meeting.place.y() - here.y());
-  agent::AgentSetpoint setpoint;
-  setpoint.position = next.meeting.place;
-  command.setpoint = setpoint;
+  driveStation(view, next.meeting.place, command);
   command.activity =
       distance > kArrived ? agent::Activity::TravellingToMeeting : agent::Activity::Waiting;
   return command;
+}
+
+// Along a ground path around the boxes' footprints. The station has no map: a wall outside the
+// boxes stops it (the simulator keeps a ground vehicle out of structures), and a station that
+// has not moved for a while blocks the ground just ahead of it and plans again.
+void Slei3dStrategy::driveStation(const agent::AgentView& view, const Vec3& goal,
+                                  agent::AgentCommand& command) {
+  const Vec3 here = view.odometry.position;
+  const planning::Vec2 at = here.head<2>();
+  if (!ground_) {
+    planning::Vec2 low = at, high = at;
+    for (const auto& box : boxes_)
+      for (const double sx : {-0.5, 0.5})
+        for (const double sy : {-0.5, 0.5}) {
+          const Vec3 corner =
+              box.center + box.rotation * Vec3(sx * box.size.x(), sy * box.size.y(), 0);
+          low = low.cwiseMin(corner.head<2>());
+          high = high.cwiseMax(corner.head<2>());
+        }
+    const planning::Vec2 margin = planning::Vec2::Constant(kGroundMargin);
+    ground_ = std::make_unique<planning::GroundGrid>(low - margin, high + margin, kGroundCell);
+    for (const auto& box : boxes_) {
+      // Boxes turn about the vertical only; a box standing on its side keeps its x axis.
+      const planning::Vec2 axis = box.rotation.col(0).head<2>();
+      ground_->blockRectangle(box.center.head<2>(),
+                              axis.norm() > 1e-6 ? axis : planning::Vec2::UnitX(),
+                              0.5 * box.size.head<2>(), unit_.radius + kGroundClearance);
+    }
+    lastMoved_ = here;
+    lastMovedTime_ = view.time;
+  }
+  const bool arrived = std::hypot(goal.x() - here.x(), goal.y() - here.y()) <= kArrived;
+  if ((here - lastMoved_).norm() > kStuckDistance || arrived) {
+    lastMoved_ = here;
+    lastMovedTime_ = view.time;
+  } else if (view.time - lastMovedTime_ > kStuckTime && !drive_.empty()) {
+    const planning::Vec2 ahead = (drive_.front() - at).normalized();
+    ground_->blockDisc(at + kBlockAhead * ahead, kBlockRadius);
+    driveGoal_ = Vec3::Constant(1e300);  // plan again
+    lastMovedTime_ = view.time;
+  }
+  if ((goal - driveGoal_).norm() > 1e-6) {
+    driveGoal_ = goal;
+    drive_ = ground_->path(at, goal.head<2>());
+    if (drive_.empty()) drive_ = {goal.head<2>()};  // no path known: straight, and learn
+  }
+  while (drive_.size() > 1 && (drive_.front() - at).norm() <= kArrived)
+    drive_.erase(drive_.begin());
+  agent::AgentSetpoint setpoint;
+  setpoint.position = Vec3(drive_.front().x(), drive_.front().y(), goal.z());
+  command.setpoint = setpoint;
 }
 
 }  // namespace coinspect::strategies::slei

@@ -182,6 +182,7 @@ SleiOptions readOptions(const Config& config) {
   o.handoutPeriod = number("handout_period", o.handoutPeriod, 0.1, 600.0);
   o.meetingGrace = number("meeting_grace", o.meetingGrace, 0.0, 600.0);
   o.inspectPatience = number("inspect_patience", o.inspectPatience, 0.0, 600.0);
+  o.maxMeetingLead = number("max_meeting_lead", o.maxMeetingLead, 50.0, 3600.0);
   o.plan.evenSplit = config.getBool("slei3d", "even_split", o.plan.evenSplit);
   o.plan.stationSpeed = number("station_speed", o.plan.stationSpeed, 0.1, 20.0);
   return o;

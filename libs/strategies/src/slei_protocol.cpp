@@ -102,14 +102,22 @@ std::vector<uint8_t> encode(const Reply& reply) {
   w.u32(reply.meetingNumber);
   w.i32(reply.box);
   put(w, reply.next);
+  w.u32(static_cast<uint32_t>(reply.stops.size()));
+  for (const auto& stop : reply.stops)
+    put(w, stop);
   return w.take();
 }
 
 std::optional<Reply> decodeReply(const std::vector<uint8_t>& bytes) {
   WireReader r(bytes);
   Reply reply;
-  const bool ok = r.u32(&reply.meetingNumber) && r.i32(&reply.box) && get(r, &reply.next);
-  return finished(r, ok, reply);
+  uint32_t n = 0;
+  bool ok =
+      r.u32(&reply.meetingNumber) && r.i32(&reply.box) && get(r, &reply.next) && r.count(&n, 32);
+  reply.stops.resize(ok ? n : 0);
+  for (uint32_t i = 0; ok && i < n; ++i)
+    ok = get(r, &reply.stops[i]);
+  return finished(r, ok, std::move(reply));
 }
 
 std::vector<uint8_t> encode(const Orders& orders) {

@@ -24,10 +24,17 @@ TEST(SleiProtocol, EveryMessageRoundTrips) {
   EXPECT_EQ(report->remaining, 75.25);
   EXPECT_EQ(report->meetingNumber, 4u);
 
-  const auto reply = decodeReply(encode(Reply{4, 5, {Vec3(3, 4, 5), 200.0}}));
+  const auto reply = decodeReply(encode(
+      Reply{4, 5, {Vec3(3, 4, 5), 200.0}, {{Vec3(1, 1, 0), 150.0}, {Vec3(3, 4, 5), 200.0}}}));
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->box, 5);
   EXPECT_EQ(reply->next.time, 200.0);
+  ASSERT_EQ(reply->stops.size(), 2u);
+  EXPECT_EQ(reply->stops[0].place, Vec3(1, 1, 0));
+  EXPECT_EQ(reply->stops[1].time, 200.0);
+  auto replyBytes = encode(Reply{4, 5, {Vec3(3, 4, 5), 200.0}, {{Vec3(1, 1, 0), 150.0}}});
+  replyBytes.resize(replyBytes.size() - 8);  // a stop cut short
+  EXPECT_FALSE(decodeReply(replyBytes));
 
   Orders orders;
   orders.sequence = 7;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "coinspect/mapping/occupancy_map.h"
@@ -62,6 +63,16 @@ std::vector<CoverageView> coverPatches(const std::vector<InspectionPatch>& patch
                                        const mapping::VoxelGrid& grid,
                                        const CoverageOptions& options,
                                        std::vector<uint32_t>* uncoverable = nullptr);
+
+// Where rays to a patch end: just outside its voxel face, so neighbouring surface voxels grazed
+// by an oblique ray do not hide the patch, while anything in front of the surface still does.
+Vec3 patchFace(const mapping::VoxelGrid& grid, const InspectionPatch& patch);
+
+// Lazy greedy weighted set cover: `sees[c]` lists the patches candidate c covers (ascending).
+// Returns the chosen candidates in the order picked, each with the patches it newly covers;
+// ties go to the lower candidate index.
+std::vector<std::pair<uint32_t, std::vector<uint32_t>>> greedyCover(
+    const std::vector<std::vector<uint32_t>>& sees, const std::vector<InspectionPatch>& patches);
 
 // True when the segment a-b crosses only Free cells of the grid (Unknown and Occupied block).
 bool freeLineOfSight(const mapping::VoxelGrid& grid, const Vec3& a, const Vec3& b);

@@ -117,4 +117,13 @@ bool segmentTraversable(const VoxelGrid& grid, const Vec3& a, const Vec3& b,
 bool nearestTraversableCell(const VoxelGrid& grid, const Vec3& point, int radius,
                             const PathSearchOptions& options, Index3* cell);
 
+// Per cell (VoxelGrid::linear), 1 when a path search from `start` (snapped as a search start
+// is, within options.snapRadius) can reach it: the traversable cells 6-connected to the start's
+// (a 26-connected move without corner cutting crosses only traversable face neighbours, so the
+// two connectivities reach the same cells). All 0 when the start has no traversable cell near.
+// One breadth-first pass, O(cells): lets a planner drop goals no search would reach before it
+// spends a search budget on each.
+std::vector<uint8_t> reachableCells(const VoxelGrid& grid, const Vec3& start,
+                                    const PathSearchOptions& options);
+
 }  // namespace coinspect::planning

@@ -80,6 +80,8 @@ class Flight {
   // heading; callers overwrite it).
   agent::AgentSetpoint step(const agent::AgentView& view, const RobotMap& map);
 
+  // The path search's options on `grid` (what a goal must satisfy to be reached).
+  planning::PathSearchOptions searchOptions(const mapping::VoxelGrid& grid) const;
   const PathProfile& profile() const { return profile_; }
   // Setpoints the offset guard had to shorten or turn into a hold (0 in a healthy flight).
   size_t guardedSetpoints() const { return guardedSetpoints_; }
@@ -88,7 +90,6 @@ class Flight {
 
  private:
   enum class Phase { Takeoff, Planning, Flying, Idle };
-  planning::PathSearchOptions searchOptions(const mapping::VoxelGrid& grid) const;
   bool plan(const Vec3& from, double speed, const RobotMap& map,
             const std::vector<planning::AvoidSphere>& avoid = {});
   // Plans the rest of the route around `blockers` (lower-priority units holding in the way);

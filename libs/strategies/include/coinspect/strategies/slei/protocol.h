@@ -59,6 +59,10 @@ struct Reply {
   uint32_t meetingNumber = 0;
   int32_t box = -1;
   Meeting next;
+  // The station's meetings in the order it will serve them, this explorer's next included: an
+  // explorer done early can catch the station at an earlier one (the station answers a report
+  // whenever they are linked).
+  std::vector<Meeting> stops;
 };
 
 // An explorer's orders to one of its inspectors: features appended to its list in order, and

@@ -24,6 +24,8 @@
 #include <vector>
 
 #include "coinspect/agent/strategy.h"
+#include "coinspect/planning/coverage.h"
+#include "coinspect/planning/ground_path.h"
 #include "coinspect/planning/meeting_route.h"
 #include "coinspect/strategies/coinspect/keyframe_relay.h"
 #include "coinspect/strategies/runtime/flight.h"
@@ -45,7 +47,10 @@ struct SleiOptions {
   double handoutPeriod = 5.0;     // s between hand-out decisions (SOEI's period)
   double meetingGrace = 10.0;     // s: a meeting partner later than this is given up (delta)
   double inspectPatience = 12.0;  // s at a feature's pose without its inspection: skip it
-  PlanOptions plan;               // the station's first plan (even split, corners, its speed)
+  // s, longest time to the next station meeting (the reference's 600 s; an explorer done early
+  // waits until then when it cannot catch the station sooner)
+  double maxMeetingLead = 600.0;
+  PlanOptions plan;  // the station's first plan (even split, corners, its speed)
 };
 
 class Slei3dStrategy : public agent::Strategy {
@@ -85,9 +90,16 @@ class Slei3dStrategy : public agent::Strategy {
   void collectDetections(const agent::AgentView& view);
   void readStatus(const agent::AgentView& view);
   bool planExploration(const agent::AgentView& view);
+  void markSwept(const agent::AgentView& view);
+  void followSweep(const agent::AgentView& view);
   void planHandout(const agent::AgentView& view);
   double predictRemaining(const agent::AgentView& view) const;
   void enterBox(const agent::AgentView& view, int32_t box);
+  // Done with the box before the meeting: the station's stop where it can be caught soonest.
+  void goToStation(const agent::AgentView& view, const Vec3& place);
+  double lastApproach_ = -1e300;
+  // `by`: when the station should be there.
+  std::optional<Vec3> earlyStop(const agent::AgentView& view, double* by) const;
 
   // ---- inspector (slei3d_inspector.cpp)
   agent::AgentCommand decideInspector(const agent::AgentView& view);
@@ -110,6 +122,13 @@ class Slei3dStrategy : public agent::Strategy {
   std::vector<StationMeeting> schedule_;  // upcoming meetings, in the order served
   std::map<uint32_t, Reply> answered_;    // per explorer: the last reply sent
   std::vector<uint8_t> boxTaken_;         // per box: assigned to some subgroup
+  // Its ground paths: around the boxes' footprints and where it found its way blocked.
+  std::unique_ptr<planning::GroundGrid> ground_;
+  std::vector<planning::Vec2> drive_;  // waypoints to the next meeting place
+  Vec3 driveGoal_ = Vec3::Constant(1e300);
+  Vec3 lastMoved_ = Vec3::Zero();  // where it was when it last moved
+  double lastMovedTime_ = 0.0;
+  void driveStation(const agent::AgentView& view, const Vec3& goal, agent::AgentCommand& command);
 
   // Explorer.
   bool joined_ = false;  // took its part of the plan
@@ -118,13 +137,28 @@ class Slei3dStrategy : public agent::Strategy {
   int32_t box_ = -1;
   double boxStart_ = 0.0;
   Meeting stationMeeting_;
+  std::vector<Meeting> stationStops_;  // the station's schedule at the last reply, in order
+  Meeting lastReply_;                  // where and when the last reply came
+  std::optional<Vec3> earlyPlace_;     // a stop to catch the station at before the meeting
+  double earlyBy_ = 0.0;               // when the station should be there
+  bool earlyTried_ = false;            // since the last reply
   uint32_t meetingNumber_ = 1;
   bool explorationFinished_ = false;
   std::optional<Vec3> exploreAim_;
-  std::vector<Vec3> unreachable_;   // frontier clusters flown to or given up
-  std::set<uint64_t> swept_;        // surface patches the detector has passed close to
-  std::vector<uint64_t> sweeping_;  // the patches of the viewpoint flown to now
-  size_t openPatches_ = 0;          // in the box at the last plan
+  std::vector<Vec3> unreachable_;  // frontier clusters flown to or given up
+  std::set<uint64_t> swept_;       // surface patches the detector has passed close to
+  // The detector's sweep: the box's open patches at the last plan and the viewpoints that pass
+  // the detector over them, in flying order (each with the patches it was chosen for).
+  struct SweepStop {
+    Vec3 position = Vec3::Zero();
+    Vec3 target = Vec3::Zero();
+    std::vector<uint64_t> keys;
+  };
+  std::vector<planning::InspectionPatch> openList_;
+  std::vector<SweepStop> sweepRoute_;
+  double atStopSince_ = -1.0;  // reached the current stop then (-1: not yet)
+  bool toFrontier_ = false;    // flying to a frontier viewpoint, not a sweep stop
+  size_t openPatches_ = 0;     // in the box at the last plan
   size_t sweptInBox_ = 0;
   double lastPlan_ = -1e300;
   double lastHandout_ = -1e300;
@@ -143,6 +177,9 @@ class Slei3dStrategy : public agent::Strategy {
     double since = 0.0;
     std::vector<FeatureTask> tasks;  // given, not known to be inspected
     std::optional<Vec3> waitAt;      // to pass on with the next orders
+    Vec3 home = Vec3::Zero();        // its wait point: where it goes with nothing to inspect
+    int missed = 0;                  // hand-outs in a row it was not found for
+    double lostUntil = 0.0;          // not looked for before this time
   };
   std::vector<InspectorModel> inspectors_;
   // A planned meeting with an inspector (SOEI): where, when, and its orders.
@@ -160,8 +197,9 @@ class Slei3dStrategy : public agent::Strategy {
   std::vector<FeatureTask> tasks_;
   std::set<uint32_t> inspected_;
   uint32_t lastOrders_ = 0;
-  std::optional<Vec3> waitAt_;     // where it stays while it has nothing to inspect
+  std::optional<Vec3> waitAt_;     // where it goes with nothing to inspect (its explorer knows)
   std::optional<Vec3> afterList_;  // where to go once the list is done (a new box)
+  double retryWaitAt_ = 0.0;       // no way to the wait point found: try again then
   std::optional<double> atTaskSince_;
   double lastStatus_ = -1e300;
 };
