@@ -37,6 +37,11 @@ record::RunReportFeatures makeFeatures(const sim::MissionSummary& s) {
   r.meetings = {{"gcs_explorer", f.meetingsGcsExplorer},
                 {"explorer_inspector", f.meetingsExplorerInspector},
                 {"other", f.meetingsOther}};
+  r.punctuality = {{"on_time", f.promisesOnTime},
+                   {"early", f.promisesEarly},
+                   {"late", f.promisesLate},
+                   {"missed", f.promisesMissed},
+                   {"rescheduled", f.promisesRescheduled}};
   r.timeline = {{"discovered", happened(f.discoveredAt)},
                 {"assigned", happened(f.assignedAt)},
                 {"inspected", happened(f.inspectedAt)},

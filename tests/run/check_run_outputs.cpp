@@ -50,6 +50,9 @@ std::string checkFeatures(const nlohmann::json& report) {
       if (times[i].get<double>() < times[i - 1].get<double>())
         return std::string("features timeline of ") + stage + " not ascending";
   }
+  for (const char* outcome : {"on_time", "early", "late", "missed", "rescheduled"})
+    if (!f.at("punctuality").at(outcome).is_number_unsigned())
+      return std::string("features punctuality lacks ") + outcome;
   const double collected = f.at("collected");
   if (std::abs(f.at("finish_rate").get<double>() - collected / static_cast<double>(total)) > 1e-12)
     return "features finish_rate is not collected / total";

@@ -14,7 +14,7 @@ min_collected=$6
 out=$7
 rm -rf "$out"
 "$coinspect" run "$config" --set "strategy.name=$strategy" --quiet --out "$out" > "$out.log"
-grep -E '^(features|meetings|collisions) ' "$out.log"
+grep -E '^(features|meetings|punctuality|collisions) ' "$out.log"
 # The summary's lines: "features    150: discovered D, assigned A, inspected I, collected C ...",
 # "meetings    gcs-explorer G, ...", "collisions  N (deaths M)", "mission ... strategy S, ...".
 count() { sed -nE "s/^$1 .*$2 ([0-9]+).*/\1/p" "$out.log"; }
@@ -30,4 +30,6 @@ check features discovered "$min_discovered"
 check features assigned "$min_assigned"
 check features collected "$min_collected"
 check meetings gcs-explorer 1
+grep -qE '^punctuality .*on time [0-9]+, early [0-9]+, late [0-9]+, missed [0-9]+, rescheduled [0-9]+$' \
+  "$out.log" || { echo "no punctuality line"; exit 1; }
 echo "ok: $strategy"

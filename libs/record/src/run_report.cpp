@@ -39,6 +39,7 @@ nlohmann::json featuresJson(const RunReportFeatures& f) {
           {"finish_rate", f.finishRate},
           {"finish_time", f.finishTime ? nlohmann::json(*f.finishTime) : nlohmann::json(nullptr)},
           {"meetings", f.meetings},
+          {"punctuality", f.punctuality},
           {"timeline", f.timeline},
           {"units", units}};
 }

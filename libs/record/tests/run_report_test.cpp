@@ -112,6 +112,7 @@ TEST(RunReport, FeaturesOnlyWhenGivenWithANullFinishTimeWhenUnfinished) {
   f.collected = 1;
   f.finishRate = 1.0 / 150.0;
   f.meetings = {{"gcs_explorer", 2}, {"explorer_inspector", 5}, {"other", 0}};
+  f.punctuality = {{"on_time", 3}, {"early", 4}, {"late", 1}, {"missed", 0}, {"rescheduled", 2}};
   f.timeline = {{"discovered", {1.0, 2.5, 2.5}}, {"collected", {9.0}}};
   RunReportFeatureUnit unit;
   unit.name = "jurong";
@@ -124,6 +125,8 @@ TEST(RunReport, FeaturesOnlyWhenGivenWithANullFinishTimeWhenUnfinished) {
   EXPECT_EQ(json.at("total"), 150);
   EXPECT_TRUE(json.at("finish_time").is_null());
   EXPECT_EQ(json.at("meetings").at("explorer_inspector"), 5);
+  EXPECT_EQ(json.at("punctuality").at("on_time"), 3);
+  EXPECT_EQ(json.at("punctuality").at("rescheduled"), 2);
   EXPECT_EQ(json.at("timeline").at("discovered").size(), 3u);
   EXPECT_EQ(json.at("timeline").at("collected")[0], 9.0);
   EXPECT_EQ(json.at("units")[0].at("activity_seconds").at("waiting"), 4.5);

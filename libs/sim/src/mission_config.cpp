@@ -70,6 +70,10 @@ FeatureConfig readFeatures(const Config& config) {
   if (!(out.meetingGap >= 0.0) || !std::isfinite(out.meetingGap))
     throw InputError(config.source(), "[features] meeting_gap", "must be a finite time >= 0 s");
   out.endWhenCollected = config.getBool(f, "end_when_collected", out.endWhenCollected);
+  out.punctualityTolerance = config.getDouble(f, "punctuality_tolerance", out.punctualityTolerance);
+  if (!(out.punctualityTolerance >= 0.0) || !std::isfinite(out.punctualityTolerance))
+    throw InputError(config.source(), "[features] punctuality_tolerance",
+                     "must be a finite time >= 0 s");
   return out;
 }
 

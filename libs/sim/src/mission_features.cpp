@@ -44,6 +44,7 @@ FeatureTracker::FeatureTracker(const FeatureConfig& config, const world::Interes
       activitySince_(names_.size(), 0.0),
       counting_(names_.size(), 0),
       activitySeconds_(names_.size()) {
+  promises_.resize(names_.size());
   for (size_t i = 0; i < names_.size(); ++i) {
     // Only inspectors keep a timer; the others get an empty one (no feature to index).
     timers_.emplace_back(isInspector(roles_[i]) ? features.size() : 0, config.inspectTime);
@@ -113,6 +114,25 @@ bool FeatureTracker::exchange(double time, const comms::LinkMatrix& links,
       ++meetingsOther_;
     sink_("meeting", names_[a], names_[b]);
   }
+  if (station_) {
+    const double tolerance = config_.punctualityTolerance;
+    for (size_t e = 0; e < promises_.size(); ++e) {
+      if (!promises_[e] || !alive[e]) continue;
+      bool linked = false;
+      for (size_t g = 0; g < roles_.size() && !linked; ++g)
+        linked = roles_[g] == agent::Role::GroundStation && alive[g] && g != e &&
+                 links.linked(static_cast<uint32_t>(e), static_cast<uint32_t>(g));
+      auto& promise = *promises_[e];
+      if (!linked) promise.unlinked = true;
+      if (!linked || promise.kept || promise.late) continue;
+      if (time < promise.time - tolerance)
+        promise.early = promise.early || promise.unlinked;
+      else if (std::abs(time - promise.time) <= tolerance)
+        promise.kept = true;
+      else if (time > promise.time + tolerance)
+        promise.late = true;
+    }
+  }
   for (const auto& handover : carried_.exchange(links, alive)) {
     pendingReceived_[handover.unit].push_back(handover.item);
     if (!station_ || handover.unit != *station_) continue;
@@ -137,6 +157,12 @@ size_t FeatureTracker::command(size_t unit, double time, const agent::AgentComma
     addActivityTime(unit, time);
     activity_[unit] = *command.activity;
   }
+  if (command.stationMeetingTime && std::isfinite(*command.stationMeetingTime) &&
+      roles_[unit] == agent::Role::Explorer &&
+      (!promises_[unit] || promises_[unit]->time != *command.stationMeetingTime)) {
+    if (promises_[unit]) settle(*promises_[unit], time, true, settled_);
+    promises_[unit] = Promise{*command.stationMeetingTime};
+  }
   size_t bad = 0;
   for (const uint32_t f : command.assignedFeatures) {
     if (f >= features_.size()) {
@@ -155,6 +181,20 @@ void FeatureTracker::fill(size_t unit, agent::AgentView& view) {
   pendingInspected_[unit].clear();
   view.receivedResults = std::move(pendingReceived_[unit]);
   pendingReceived_[unit].clear();
+}
+
+void FeatureTracker::settle(const Promise& promise, double now, bool replaced,
+                            PromiseCounts& counts) const {
+  const double tolerance = config_.punctualityTolerance;
+  if (promise.kept)
+    ++counts.onTime;
+  else if (promise.late)
+    ++counts.late;
+  else if (now > promise.time + tolerance)
+    ++counts.missed;
+  else if (replaced && now < promise.time - tolerance)
+    ++(promise.early ? counts.early : counts.rescheduled);
+  // Else still open at the end, or replaced inside its window: not counted.
 }
 
 FeatureSummary FeatureTracker::summary(double now, double startTime) const {
@@ -178,6 +218,14 @@ FeatureSummary FeatureTracker::summary(double now, double startTime) const {
   out.meetingsGcsExplorer = meetingsGcsExplorer_;
   out.meetingsExplorerInspector = meetingsExplorerInspector_;
   out.meetingsOther = meetingsOther_;
+  PromiseCounts promises = settled_;
+  for (const auto& promise : promises_)
+    if (promise) settle(*promise, now, false, promises);
+  out.promisesOnTime = promises.onTime;
+  out.promisesEarly = promises.early;
+  out.promisesLate = promises.late;
+  out.promisesMissed = promises.missed;
+  out.promisesRescheduled = promises.rescheduled;
   for (size_t i = 0; i < names_.size(); ++i) {
     FeatureUnitSummary u;
     u.activitySeconds = activitySeconds_[i];

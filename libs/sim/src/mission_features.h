@@ -49,6 +49,19 @@ class FeatureTracker {
 
  private:
   void addActivityTime(size_t unit, double time);
+  // An explorer's promised station meeting and what became of it.
+  struct Promise {
+    double time = 0.0;
+    bool kept = false, late = false;
+    bool unlinked = false;  // not linked with a station at some update since it was made
+    bool early = false;     // linked again after that, before its window
+  };
+  struct PromiseCounts {
+    uint64_t onTime = 0, early = 0, late = 0, missed = 0, rescheduled = 0;
+  };
+  // Counts the promise as it stands at `now`: `replaced` by another one, or at the end of the
+  // mission (a promise whose window has not closed yet is not counted).
+  void settle(const Promise& promise, double now, bool replaced, PromiseCounts& counts) const;
 
   FeatureConfig config_;
   const world::InterestPointSet& features_;
@@ -63,6 +76,8 @@ class FeatureTracker {
   std::vector<double> discoveredAt_, assignedAt_, inspectedAt_, collectedAt_;  // sim time
   std::optional<double> finishedAt_;
   uint64_t meetingsGcsExplorer_ = 0, meetingsExplorerInspector_ = 0, meetingsOther_ = 0;
+  std::vector<std::optional<Promise>> promises_;  // per unit: the current one
+  PromiseCounts settled_;                         // promises replaced so far
   // Per unit.
   std::vector<std::vector<agent::FeatureView>> pendingDetections_;
   std::vector<std::vector<uint32_t>> pendingInspected_, pendingReceived_;

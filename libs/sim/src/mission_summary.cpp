@@ -102,6 +102,13 @@ std::string formatSummary(const MissionSummary& s) {
         static_cast<unsigned long long>(f.meetingsGcsExplorer),
         static_cast<unsigned long long>(f.meetingsExplorerInspector),
         static_cast<unsigned long long>(f.meetingsOther));
+    add("punctuality explorers' promised station meetings: on time %llu, early %llu, late %llu, "
+        "missed %llu, rescheduled %llu\n",
+        static_cast<unsigned long long>(f.promisesOnTime),
+        static_cast<unsigned long long>(f.promisesEarly),
+        static_cast<unsigned long long>(f.promisesLate),
+        static_cast<unsigned long long>(f.promisesMissed),
+        static_cast<unsigned long long>(f.promisesRescheduled));
   }
   double distance = 0.0;
   for (const auto& u : s.units)

@@ -195,6 +195,75 @@ TEST(FeatureMission, AnInspectionNeedsTheWholeInspectTimeInView) {
   EXPECT_EQ(f.collected, 0u);
 }
 
+// The explorer promises a station meeting at `promise` s (from `replaceAt` on, at `replacement`
+// s), flies off out of the station's 5 m range, comes back next to it at `returnAt` and leaves
+// again at `leaveAt`.
+class Promiser final : public agent::Strategy {
+ public:
+  Promiser(std::string name, double promise, double replaceAt, double replacement, double returnAt,
+           double leaveAt)
+      : name_(std::move(name)),
+        promise_(promise),
+        replaceAt_(replaceAt),
+        replacement_(replacement),
+        returnAt_(returnAt),
+        leaveAt_(leaveAt) {}
+  agent::AgentCommand decide(const agent::AgentView& view) override {
+    agent::AgentCommand command;
+    if (name_ != "e") return command;
+    agent::AgentSetpoint setpoint;
+    const bool back = view.time >= returnAt_ && view.time < leaveAt_;
+    setpoint.position = back ? agent::Vec3(1.5, -1, 2) : agent::Vec3(6.5, -4, 4);
+    command.setpoint = setpoint;
+    command.stationMeetingTime = view.time < replaceAt_ ? promise_ : replacement_;
+    return command;
+  }
+
+ private:
+  std::string name_;
+  double promise_, replaceAt_, replacement_, returnAt_, leaveAt_;
+};
+
+sim::FeatureSummary promises(double promise, double replaceAt, double replacement, double returnAt,
+                             double leaveAt = 1e9) {
+  agent::StrategyRegistry registry;
+  registry.registerStrategy("scripted", [=](const agent::StrategyContext& context) {
+    return std::make_unique<Promiser>(context.unitName, promise, replaceAt, replacement, returnAt,
+                                      leaveAt);
+  });
+  const auto config = Config::fromText(kFeatureMission, "features.ini");
+  Mission mission(featureScene(), config, registry);
+  mission.run();  // 40 s: nothing is collected (no inspection)
+  return mission.summary().features;
+}
+
+// Promised at 20 s, tolerance 10 s: linked with the station within [10, 30] s is on time, first
+// linked after 30 s late, never linked missed; a promise replaced before its window opens is
+// early when the two met meanwhile, else rescheduled; one still open at the end is not counted.
+TEST(FeatureMission, PunctualityComparesPromisedStationMeetingsWithLinks) {
+  // Linked from about 14 to 17 s only: not at 20 s itself, but within the tolerance.
+  const auto onTime = promises(20, 1e9, 0, 12, 17);
+  EXPECT_EQ(onTime.promisesOnTime, 1u);
+  EXPECT_EQ(onTime.promisesLate + onTime.promisesMissed + onTime.promisesRescheduled, 0u);
+  const auto late = promises(20, 1e9, 0, 31);
+  EXPECT_EQ(late.promisesLate, 1u);
+  EXPECT_EQ(late.promisesOnTime + late.promisesMissed + late.promisesRescheduled, 0u);
+  const auto missed = promises(20, 1e9, 0, 1e9);
+  EXPECT_EQ(missed.promisesMissed, 1u);
+  EXPECT_EQ(missed.promisesOnTime + missed.promisesLate + missed.promisesRescheduled, 0u);
+  const auto rescheduled = promises(30, 5, 60, 1e9);
+  EXPECT_EQ(rescheduled.promisesRescheduled, 1u);
+  EXPECT_EQ(rescheduled.promisesOnTime + rescheduled.promisesEarly + rescheduled.promisesLate +
+                rescheduled.promisesMissed,
+            0u);
+  // Out at the start, back at the station from about 14 s, the promise of 30 s replaced at 16 s.
+  const auto early = promises(30, 16, 60, 12);
+  EXPECT_EQ(early.promisesEarly, 1u);
+  EXPECT_EQ(
+      early.promisesOnTime + early.promisesLate + early.promisesMissed + early.promisesRescheduled,
+      0u);
+}
+
 TEST(FeatureMission, BadFeatureKeysAreErrorsNamingTheKey) {
   Seen seen;
   const auto registry = scripted(12.0, seen);
@@ -209,6 +278,8 @@ TEST(FeatureMission, BadFeatureKeysAreErrorsNamingTheKey) {
   expectError(kFeatureMission + "[features]\ndetect_half_yaw = 200\n", "detect_half_yaw");
   expectError(kFeatureMission + "[features]\ndetect_range = -1\n", "detect_range");
   expectError(kFeatureMission + "[features]\nmeeting_gap = nan\n", "meeting_gap");
+  expectError(kFeatureMission + "[features]\npunctuality_tolerance = -1\n",
+              "punctuality_tolerance");
   expectError("[mission]\nobjective = score\n[strategy]\nname = scripted\n", "objective");
   expectError("[mission]\n[features]\ninspect_time = 2\n[strategy]\nname = scripted\n",
               "[features]");

@@ -626,6 +626,7 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
       view.time - lastHandout_ >= options_.handoutPeriod)
     planHandout(view);
   auto flown = fly(view, aim);
+  if (stationMeeting_.time < kNoMeeting) flown.stationMeetingTime = stationMeeting_.time;
   flown.activity = command.activity;
   flown.assignedFeatures = std::move(command.assignedFeatures);
   flown.messages = std::move(command.messages);

@@ -67,9 +67,16 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
     double lead = std::clamp(report->remaining, kMinRemaining,
                              std::max(kMinRemaining, options_.maxMeetingLead));
     if (report->boxFinished && report->box >= 0) {
-      // Rolling assignment: the free box nearest the finished one, for the whole subgroup.
-      reply.box =
-          nearestFreeBox(boxes_, boxTaken_, boxes_[static_cast<size_t>(report->box)].center);
+      // Rolling assignment: the free box nearest the finished one, for the whole subgroup
+      // (slei-pre: the next of its fixed order).
+      if (options_.variant == SleiVariant::Pre) {
+        auto& order = boxOrder_[explorer];
+        reply.box = order.empty() ? -1 : order.front();
+        if (!order.empty()) order.erase(order.begin());
+      } else {
+        reply.box =
+            nearestFreeBox(boxes_, boxTaken_, boxes_[static_cast<size_t>(report->box)].center);
+      }
       if (reply.box >= 0) {
         boxTaken_[static_cast<size_t>(reply.box)] = 1;
         lead = kNewBoxLead;
@@ -80,12 +87,13 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
       reply.next = {here, kNoMeeting};  // nothing left for this subgroup
     } else {
       // The corner nearest the station (the reference's rule). The paper's, the corner whose
-      // arrival time best matches the planned time (planning::bestTimedMeetingCorner), needs
-      // the station's ground paths: driving straight, it stopped at a wall on the far side of a
-      // box for the rest of a slei-a run.
-      const Vec3 place = reply.box >= 0 ? boxCorner(boxes_[static_cast<size_t>(reply.box)],
-                                                    options_.plan.cornerOffset, here.z(), here)
-                                        : here;
+      // arrival time best matches the planned time (planning::bestTimedMeetingCorner), was
+      // tried only while the station drove straight (it stopped at a wall on the far side of a
+      // box for the rest of a slei-a run); not yet with its ground paths.
+      Vec3 place = reply.box >= 0 ? boxCorner(boxes_[static_cast<size_t>(reply.box)],
+                                              options_.plan.cornerOffset, here.z(), here)
+                                  : here;
+      if (options_.variant == SleiVariant::Fix) place = here, lead = options_.fixInterval;
       reply.next = {place, view.time + lead};
     }
     schedule_.erase(std::remove_if(schedule_.begin(), schedule_.end(),
@@ -105,6 +113,17 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
   const Vec3 here = view.odometry.position;
   if (!plan_) {
     plan_ = makeFleetPlan(unit_.fleet, boxes_, here, groundZ_, view.time, options_.plan);
+    if (options_.variant == SleiVariant::Fix)
+      for (auto& s : plan_->subgroups)
+        s.firstMeeting = {here, view.time + options_.fixInterval};
+    if (options_.variant == SleiVariant::Pre) {
+      std::vector<int32_t> first;
+      for (const auto& s : plan_->subgroups)
+        first.push_back(s.box);
+      const auto orders = fixedBoxOrders(boxes_, first);
+      for (size_t i = 0; i < orders.size(); ++i)
+        boxOrder_[plan_->subgroups[i].explorer] = orders[i];
+    }
     planBytes_ = encode(*plan_);
     for (const auto& s : plan_->subgroups) {
       if (s.box >= 0) boxTaken_[static_cast<size_t>(s.box)] = 1;
@@ -127,7 +146,7 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
   }
   const double distance =
       std::hypot(next.meeting.place.x() - here.x(), next.meeting.place.y() - here.y());
-  driveStation(view, next.meeting.place, command);
+  if (options_.variant != SleiVariant::Fix) driveStation(view, next.meeting.place, command);
   command.activity =
       distance > kArrived ? agent::Activity::TravellingToMeeting : agent::Activity::Waiting;
   return command;

@@ -183,6 +183,7 @@ SleiOptions readOptions(const Config& config) {
   o.meetingGrace = number("meeting_grace", o.meetingGrace, 0.0, 600.0);
   o.inspectPatience = number("inspect_patience", o.inspectPatience, 0.0, 600.0);
   o.maxMeetingLead = number("max_meeting_lead", o.maxMeetingLead, 50.0, 3600.0);
+  o.fixInterval = number("fix_interval", o.fixInterval, 10.0, 3600.0);
   o.plan.evenSplit = config.getBool("slei3d", "even_split", o.plan.evenSplit);
   o.plan.stationSpeed = number("station_speed", o.plan.stationSpeed, 0.1, 20.0);
   return o;
@@ -193,6 +194,16 @@ SleiOptions readOptions(const Config& config) {
 void registerSlei3d(agent::StrategyRegistry& registry) {
   registry.registerStrategy("slei3d", [](const agent::StrategyContext& context) {
     return std::make_unique<Slei3dStrategy>(context, readOptions(context.config));
+  });
+  registry.registerStrategy("slei-pre", [](const agent::StrategyContext& context) {
+    auto options = readOptions(context.config);
+    options.variant = SleiVariant::Pre;
+    return std::make_unique<Slei3dStrategy>(context, options);
+  });
+  registry.registerStrategy("slei-fix", [](const agent::StrategyContext& context) {
+    auto options = readOptions(context.config);
+    options.variant = SleiVariant::Fix;
+    return std::make_unique<Slei3dStrategy>(context, options);
   });
 }
 

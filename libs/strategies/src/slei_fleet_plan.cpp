@@ -59,6 +59,29 @@ int32_t nearestFreeBox(const std::vector<agent::BoxView>& boxes,
   return best;
 }
 
+std::vector<std::vector<int32_t>> fixedBoxOrders(const std::vector<agent::BoxView>& boxes,
+                                                 const std::vector<int32_t>& firstBoxes) {
+  std::vector<uint8_t> assigned(boxes.size(), 0);
+  std::vector<int32_t> last = firstBoxes;
+  for (const int32_t b : firstBoxes)
+    if (b >= 0) assigned[static_cast<size_t>(b)] = 1;
+  std::vector<std::vector<int32_t>> orders(firstBoxes.size());
+  for (bool dealt = true; dealt;) {
+    dealt = false;
+    for (size_t s = 0; s < last.size(); ++s) {
+      if (last[s] < 0) continue;  // a subgroup without a box gets none later either
+      const int32_t next =
+          nearestFreeBox(boxes, assigned, boxes[static_cast<size_t>(last[s])].center);
+      if (next < 0) return orders;
+      assigned[static_cast<size_t>(next)] = 1;
+      orders[s].push_back(next);
+      last[s] = next;
+      dealt = true;
+    }
+  }
+  return orders;
+}
+
 Vec3 boxCorner(const agent::BoxView& box, double offset, double z, const Vec3& from) {
   const auto bounds = runtime::boxBounds(box);
   const Vec3 grow(offset, offset, 0.0);

@@ -34,6 +34,22 @@ TEST(SleiFleetPlan, NearestFreeBoxSkipsAssignedOnesAndMeasuresHorizontally) {
   EXPECT_EQ(nearestFreeBox(boxes, {1, 1, 1}, agent::Vec3::Zero()), -1);
 }
 
+// SLEI-PRE: boxes on a line at x = 0, 10, ..., 50; subgroups start at 0 and 50 and take turns,
+// each the free box nearest its last: 10 (from 0), 40 (from 50), 20, 30.
+TEST(SleiFleetPlan, FixedBoxOrdersDealTheRestInTurnsNearestFirst) {
+  std::vector<agent::BoxView> boxes;
+  for (int i = 0; i < 6; ++i)
+    boxes.push_back(makeBox({10.0 * i, 0, 2}, {2, 2, 4}));
+  const auto orders = fixedBoxOrders(boxes, {0, 5});
+  ASSERT_EQ(orders.size(), 2u);
+  EXPECT_EQ(orders[0], (std::vector<int32_t>{1, 2}));
+  EXPECT_EQ(orders[1], (std::vector<int32_t>{4, 3}));
+  // A subgroup without a first box gets nothing; the others share every box.
+  const auto uneven = fixedBoxOrders(boxes, {-1, 0});
+  EXPECT_TRUE(uneven[0].empty());
+  EXPECT_EQ(uneven[1], (std::vector<int32_t>{1, 2, 3, 4, 5}));
+}
+
 TEST(SleiFleetPlan, CornersLieOutsideTheBoxAndAwayFromIt) {
   const auto box = makeBox({0, 0, 5}, {10, 6, 10});
   const Vec3 corner = boxCorner(box, 2.0, 0.5, {20, 20, 0});

@@ -52,6 +52,10 @@ struct AgentCommand {
   // rejected and counted like a bad setpoint).
   std::optional<Activity> activity;
   std::vector<uint32_t> assignedFeatures;
+  // Feature missions, explorers, for the report only: when this explorer plans to meet a ground
+  // station next (simulated time; kept until the next one). The report's punctuality compares
+  // it with when the explorer and a station were actually linked (doc/features.md).
+  std::optional<double> stationMeetingTime;
 };
 
 }  // namespace coinspect::agent

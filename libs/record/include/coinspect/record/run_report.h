@@ -47,8 +47,9 @@ struct RunReportFeatureUnit {
 struct RunReportFeatures {
   uint64_t total = 0, discovered = 0, assigned = 0, inspected = 0, collected = 0;
   double finishRate = 0.0;
-  std::optional<double> finishTime;          // all collected; absent: not within the budget
-  std::map<std::string, uint64_t> meetings;  // gcs_explorer, explorer_inspector, other
+  std::optional<double> finishTime;             // all collected; absent: not within the budget
+  std::map<std::string, uint64_t> meetings;     // gcs_explorer, explorer_inspector, other
+  std::map<std::string, uint64_t> punctuality;  // on_time, early, late, missed, rescheduled
   // discovered/assigned/inspected/collected -> the times it happened, ascending (the curves of
   // features over time: the k-th time is when the count reached k).
   std::map<std::string, std::vector<double>> timeline;

@@ -44,11 +44,12 @@ enum class Objective { Points, Features };
 
 // [features]: only with objective = features.
 struct FeatureConfig {
-  sensing::FeatureSensor sensor;  // explorers' detector
-  double inspectTime = 3.0;       // s of consecutive captures that count a feature
-  double inspectScore = 0.2;      // CARIC score a capture needs to count a feature
-  double meetingGap = 2.0;        // s a pair's link must have been down for a new meeting
-  bool endWhenCollected = true;   // the mission ends when the station holds every feature
+  sensing::FeatureSensor sensor;       // explorers' detector
+  double inspectTime = 3.0;            // s of consecutive captures that count a feature
+  double inspectScore = 0.2;           // CARIC score a capture needs to count a feature
+  double meetingGap = 2.0;             // s a pair's link must have been down for a new meeting
+  bool endWhenCollected = true;        // the mission ends when the station holds every feature
+  double punctualityTolerance = 10.0;  // s either side of a promised station meeting (delta)
 };
 
 struct MissionConfig {

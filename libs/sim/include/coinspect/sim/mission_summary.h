@@ -68,6 +68,13 @@ struct FeatureSummary {
   }
   std::optional<double> finishTime;  // when the station held every feature
   uint64_t meetingsGcsExplorer = 0, meetingsExplorerInspector = 0, meetingsOther = 0;
+  // Explorers' promised station meetings (AgentCommand::stationMeetingTime), each counted once
+  // it is settled: linked with a station within the tolerance of the promised time (on time),
+  // met (linked again after a break) and replaced before that window (early), first linked
+  // after the window (late), not linked by then nor before the promise ended (missed), or
+  // replaced before its window without a meeting (rescheduled). doc/features.md.
+  uint64_t promisesOnTime = 0, promisesEarly = 0, promisesLate = 0, promisesMissed = 0,
+           promisesRescheduled = 0;
   // Per feature, when it was first discovered, assigned, inspected, collected (NaN: never).
   std::vector<double> discoveredAt, assignedAt, inspectedAt, collectedAt;
   std::vector<FeatureUnitSummary> units;  // fleet order

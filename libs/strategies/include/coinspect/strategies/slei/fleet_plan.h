@@ -23,6 +23,13 @@ std::vector<size_t> inspectorsPerSubgroup(size_t inspectors, size_t explorers, b
 int32_t nearestFreeBox(const std::vector<agent::BoxView>& boxes,
                        const std::vector<uint8_t>& assigned, const Vec3& from);
 
+// SLEI-PRE's fixed box orders (the paper's baseline without rolling assignment): given each
+// subgroup's first box (-1: none), the other boxes are dealt in turns, each subgroup taking the
+// free box nearest its last one (nearestFreeBox), until none is left. Returns, per subgroup,
+// the boxes after its first, in the order it will explore them.
+std::vector<std::vector<int32_t>> fixedBoxOrders(const std::vector<agent::BoxView>& boxes,
+                                                 const std::vector<int32_t>& firstBoxes);
+
 // Of the four corners of the box's world-aligned bounds moved `offset` m outwards in x and y,
 // at height z, the one nearest (horizontally) to `from` (planning::nearestMeetingCorner). The
 // reference uses corners 1 m inside the box (its robots' maps extend 2 m beyond it); the boxes

@@ -36,16 +36,23 @@
 
 namespace coinspect::strategies::slei {
 
+// The paper's baselines that differ from SLEI3D only in the station's layer: SLEI-PRE (each
+// explorer's boxes in an order fixed at the start, no rolling assignment) and SLEI-FIX (the
+// station does not move; explorers come back to it at fixed intervals).
+enum class SleiVariant { Slei3d, Pre, Fix };
+
 struct SleiOptions {
-  double speed = 2.0;             // m/s, UAV cruise
-  double exploreHeight = 3.0;     // m above the ground to enter a box
-  double meetHeight = 3.0;        // m above the ground where an explorer meets the station
-  double waitHeight = 6.0;        // m above the ground where inspectors wait for orders
-  double gridResolution = 0.5;    // m, map and planning grid
-  double safetyMargin = 0.4;      // m between a UAV's sphere and mapped surface
-  double sweepDistance = 4.0;     // m from a surface patch to sweep the detector over it
-  double handoutPeriod = 5.0;     // s between hand-out decisions (SOEI's period)
-  double meetingGrace = 10.0;     // s: a meeting partner later than this is given up (delta)
+  SleiVariant variant = SleiVariant::Slei3d;
+  double fixInterval = 120.0;   // s between an explorer's returns to the static station (slei-fix)
+  double speed = 2.0;           // m/s, UAV cruise
+  double exploreHeight = 3.0;   // m above the ground to enter a box
+  double meetHeight = 3.0;      // m above the ground where an explorer meets the station
+  double waitHeight = 6.0;      // m above the ground where inspectors wait for orders
+  double gridResolution = 0.5;  // m, map and planning grid
+  double safetyMargin = 0.4;    // m between a UAV's sphere and mapped surface
+  double sweepDistance = 4.0;   // m from a surface patch to sweep the detector over it
+  double handoutPeriod = 5.0;   // s between hand-out decisions (SOEI's period)
+  double meetingGrace = 10.0;   // s: a meeting partner later than this is given up (delta)
   double inspectPatience = 12.0;  // s at a feature's pose without its inspection: skip it
   // s, longest time to the next station meeting (the reference's 600 s; an explorer done early
   // waits until then when it cannot catch the station sooner)
@@ -119,9 +126,10 @@ class Slei3dStrategy : public agent::Strategy {
   std::vector<agent::BoxView> boxes_;
 
   // Station.
-  std::vector<StationMeeting> schedule_;  // upcoming meetings, in the order served
-  std::map<uint32_t, Reply> answered_;    // per explorer: the last reply sent
-  std::vector<uint8_t> boxTaken_;         // per box: assigned to some subgroup
+  std::vector<StationMeeting> schedule_;               // upcoming meetings, in the order served
+  std::map<uint32_t, Reply> answered_;                 // per explorer: the last reply sent
+  std::vector<uint8_t> boxTaken_;                      // per box: assigned to some subgroup
+  std::map<uint32_t, std::vector<int32_t>> boxOrder_;  // slei-pre: per explorer, boxes left
   // Its ground paths: around the boxes' footprints and where it found its way blocked.
   std::unique_ptr<planning::GroundGrid> ground_;
   std::vector<planning::Vec2> drive_;  // waypoints to the next meeting place
