@@ -219,7 +219,6 @@ bool Slei3dStrategy::planExploration(const agent::AgentView& view) {
 // last reply) and leaves a stop once its meeting is held, about the stop's time.
 std::optional<Vec3> Slei3dStrategy::earlyStop(const agent::AgentView& view, double* by) const {
   constexpr double kWorthIt = 20.0;  // s saved at least
-  constexpr double kService = 10.0;  // s a meeting holds the station (as the station plans)
   const Vec3 here = view.odometry.position;
   const auto drive = [&](const Vec3& a, const Vec3& b) {
     return std::hypot(a.x() - b.x(), a.y() - b.y()) / options_.plan.stationSpeed;
@@ -234,7 +233,7 @@ std::optional<Vec3> Slei3dStrategy::earlyStop(const agent::AgentView& view, doub
     const double at = std::max(arrives, view.time + straightTime(here, stop.place, options_.speed));
     if ((own || at <= stop.time) && at < soonest) soonest = *by = at, best = stop.place;
     if (own) break;
-    free = std::max(arrives, stop.time) + kService;
+    free = std::max(arrives, stop.time) + kMeetingService;
     from = stop.place;
   }
   return best;

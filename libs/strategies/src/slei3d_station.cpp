@@ -14,7 +14,6 @@ constexpr double kArrived = 0.5;          // m from a meeting place that counts 
 constexpr double kMinRemaining = 50.0;    // s (the reference's floor)
 constexpr double kNewBoxLead = 60.0;      // s to the first meeting in a new box (the reference)
 constexpr double kPresumedLost = 6.0;     // meeting graces after its time: the explorer is lost
-constexpr double kService = 10.0;         // s a meeting holds the station
 constexpr double kGroundCell = 0.5;       // m, the station's ground grid
 constexpr double kGroundMargin = 15.0;    // m around the boxes that the grid covers
 constexpr double kGroundClearance = 0.5;  // m kept from a box's footprint beyond its radius
@@ -38,7 +37,7 @@ void Slei3dStrategy::orderSchedule(const agent::AgentView& view) {
     meeting.place = schedule_[i].meeting.place;
     meeting.earliest = schedule_[i].meeting.time;
     meeting.latest = schedule_[i].meeting.time + kPresumedLost * options_.meetingGrace;
-    meeting.service = kService;
+    meeting.service = kMeetingService;
     problem.meetings.push_back(meeting);
   }
   const auto order = planning::planMeetingOrder(problem).order;

@@ -17,6 +17,9 @@ inline constexpr const char* kPlanTopic = "slei/plan";      // station -> everyo
 inline constexpr const char* kReportTopic = "slei/report";  // explorer -> station
 inline constexpr const char* kReplyTopic = "slei/reply";    // station -> explorer
 inline constexpr const char* kOrdersTopic = "slei/orders";  // explorer -> inspector
+// s a meeting holds the station: it plans its meeting order with it, and an explorer done early
+// with it predicts where the station will be.
+inline constexpr double kMeetingService = 10.0;
 inline constexpr const char* kStatusTopic = "slei/status";  // inspector -> explorer
 
 // A feature to inspect and the pose to inspect it from (the explorer's pose when it detected it:
