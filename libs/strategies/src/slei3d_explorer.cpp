@@ -33,6 +33,7 @@ constexpr double kLeaveMargin = 10.0;       // s: leave for the station this ear
 constexpr double kTravelFactor = 1.5;       // paths are longer than straight lines
 constexpr double kSettle = 2.0;             // s an inspector needs at a pose beyond t_q
 constexpr double kInspectionTime = 3.0;     // s, t_q ([features] inspect_time's default)
+constexpr double kPoseTravel = 5.0;         // s between two poses of a list, a rough guess
 constexpr double kNoMeeting = 1e299;
 
 double straightTime(const Vec3& a, const Vec3& b, double speed) {
@@ -78,12 +79,13 @@ void Slei3dStrategy::enterBox(const agent::AgentView& view, int32_t box) {
     phase_ = ExplorerPhase::Done;
     return;
   }
-  const Vec3 corner = boxCorner(boxes_[static_cast<size_t>(box)], options_.plan.cornerOffset,
+  const Vec3 corner = boxCorner(boxes_, static_cast<size_t>(box), options_.plan.cornerOffset,
                                 groundZ_ + options_.exploreHeight, view.odometry.position);
   phase_ = ExplorerPhase::ToBox;
   flight_->goTo(corner, options_.speed);
   // Every inspector of the subgroup waits off the new corner once its list is done; it learns
-  // of it at its next orders.
+  // of it at its next orders (caric-team's inspectors keep waiting at the relay).
+  if (options_.variant == SleiVariant::Team) return;
   for (size_t k = 0; k < inspectors_.size(); ++k)
     inspectors_[k].waitAt =
         awayFromBox(boxes_[static_cast<size_t>(box)], corner, 2.5 * static_cast<double>(k + 1),
@@ -239,32 +241,39 @@ std::optional<Vec3> Slei3dStrategy::earlyStop(const agent::AgentView& view, doub
   return best;
 }
 
-// Where to wait for the station at `place`: the flyable point nearest to a station standing
-// there, in line of sight of it (straight above the corner, an explorer kept clear of a nearby
-// structure hovered 5.4 m from the station, beyond the 5 m link); above the place when the map
-// offers nothing within the link's reach.
-void Slei3dStrategy::goToStation(const agent::AgentView& view, const Vec3& place) {
-  lastApproach_ = view.time;
+// Where to meet a partner at `partner`: the flyable point nearest to it in line of sight (straight
+// above a station's corner, an explorer kept clear of a nearby structure hovered 5.4 m from the
+// station, beyond the 5 m link; a wait point in unmapped space has no path); `fallback` when the
+// map offers nothing within the link's reach. Only points at or above the partner when `above`.
+Vec3 Slei3dStrategy::meetingPointNear(const agent::AgentView& view, const Vec3& partner,
+                                      const Vec3& fallback, bool above) const {
   const auto& grid = map_->grid();
   const auto reachable =
       planning::reachableCells(grid, view.odometry.position, flight_->searchOptions(grid));
-  const Vec3 station(place.x(), place.y(), groundZ_ + kStationAntenna);
-  Vec3 best(place.x(), place.y(), groundZ_ + options_.meetHeight);
+  Vec3 best = fallback;
   double bestDistance = kApproachReach;
   const double step = grid.resolution();
   const int r = static_cast<int>(std::ceil(kApproachReach / step));
-  const auto centre = grid.cellOf(station);
-  for (int dz = 0; dz <= r; ++dz)
+  const auto centre = grid.cellOf(partner);
+  for (int dz = above ? 0 : -r; dz <= r; ++dz)
     for (int dy = -r; dy <= r; ++dy)
       for (int dx = -r; dx <= r; ++dx) {
         const mapping::Index3 cell = centre + mapping::Index3(dx, dy, dz);
         if (!grid.contains(cell) || !reachable[grid.linear(cell)]) continue;
         const Vec3 p = grid.centre(cell);
-        const double d = (p - station).norm();
-        if (d < bestDistance && planning::lineOfSight(grid, p, station, false))
+        const double d = (p - partner).norm();
+        if (d < bestDistance && planning::lineOfSight(grid, p, partner, false))
           bestDistance = d, best = p;
       }
-  flight_->goTo(best, options_.speed);
+  return best;
+}
+
+void Slei3dStrategy::goToStation(const agent::AgentView& view, const Vec3& place) {
+  lastApproach_ = view.time;
+  const Vec3 station(place.x(), place.y(), groundZ_ + kStationAntenna);
+  flight_->goTo(meetingPointNear(view, station,
+                                 Vec3(place.x(), place.y(), groundZ_ + options_.meetHeight), true),
+                options_.speed);
 }
 
 // Every open patch the detector passes over counts as swept, on the way to a stop as well.
@@ -320,6 +329,12 @@ double Slei3dStrategy::predictRemaining(const agent::AgentView& view) const {
     ends.push_back(plan.poses.back().position);
   }
   if (box_ < 0 && pending_.empty()) return latest - view.time;
+  // explore-then-inspect's features, all pending when the boxes are done: a pose each, shared
+  // by the inspectors, after their lists.
+  if (box_ < 0)
+    return latest - view.time +
+           static_cast<double>(pending_.size()) * (kInspectionTime + kSettle + kPoseTravel) /
+               static_cast<double>(std::max<size_t>(1, inspectors_.size()));
   planning::CompletionInputs in;
   const auto& box = boxes_[static_cast<size_t>(std::max(box_, 0))];
   in.boxVolume = box.size.prod();
@@ -340,11 +355,64 @@ double Slei3dStrategy::predictRemaining(const agent::AgentView& view) const {
   return planning::predictCompletion(in, options).remaining;
 }
 
+std::vector<Slei3dStrategy::Handout> Slei3dStrategy::handToFreeSoonest(
+    const agent::AgentView& view, bool explorationFinished) const {
+  std::optional<size_t> first;
+  planning::InspectorPlan firstPlan;
+  for (size_t k = 0; k < inspectors_.size(); ++k) {
+    if (inspectors_[k].lostUntil > view.time) continue;
+    auto plan = predictedPlan(inspectors_[k], view.time);
+    if (!first || plan.poses.back().start < firstPlan.poses.back().start)
+      first = k, firstPlan = std::move(plan);
+  }
+  if (!first || pending_.empty()) return {};
+  Handout handout;
+  handout.inspector = *first;
+  const Vec3 end = firstPlan.poses.back().position;
+  handout.place = meetingPointNear(view, end, end, false);
+  handout.time = firstPlan.poses.back().start;
+  const double arrival =
+      view.time + straightTime(view.odometry.position, handout.place, options_.speed);
+  if (!explorationFinished && handout.time - arrival > kMaxHandoutWait) return {};
+  handout.time = std::max(handout.time, arrival);  // given up a grace after it
+  handout.orders.tasks = pending_;
+  return {std::move(handout)};
+}
+
+std::vector<Slei3dStrategy::Handout> Slei3dStrategy::planCollection(
+    const agent::AgentView& view) const {
+  std::vector<Handout> planned;
+  for (size_t k = 0; k < inspectors_.size(); ++k) {
+    const auto& model = inspectors_[k];
+    if (model.tasks.empty() || model.lostUntil > view.time) continue;
+    const auto plan = predictedPlan(model, view.time);
+    Handout handout;
+    handout.inspector = k;
+    const Vec3 end = plan.poses.back().position;
+    handout.place = meetingPointNear(view, end, end, false);
+    handout.time =
+        std::max(plan.poses.back().start,
+                 view.time + straightTime(view.odometry.position, handout.place, options_.speed));
+    handout.collect = true;
+    planned.push_back(std::move(handout));
+  }
+  std::stable_sort(planned.begin(), planned.end(),
+                   [](const Handout& a, const Handout& b) { return a.time < b.time; });
+  return planned;
+}
+
 // SOEI (planning/meeting_decision.h): which inspectors to meet with the pending features, in
 // which order, where; or not to meet yet.
 void Slei3dStrategy::planHandout(const agent::AgentView& view) {
   lastHandout_ = view.time;
   if (inspectors_.empty() || !handouts_.empty()) return;
+  // explore-then-inspect: no feature handed out while a box is left to explore.
+  if (options_.variant == SleiVariant::ExploreFirst && box_ >= 0) return;
+  // Nothing left to explore nor to hand out: the inspectors' results are still to be carried
+  // to the station (the last features of a run were inspected and never collected).
+  if (box_ < 0 && pending_.empty()) return startHandouts(planCollection(view));
+  if (options_.variant == SleiVariant::Team)
+    return startHandouts(handToFreeSoonest(view, explorationFinished_ || box_ < 0));
   // Inspectors missed twice in a row are left out for a while: the explorer does not know
   // where they are, and looking for them again and again kept it from exploring for minutes.
   const auto reachable = [&](const InspectorModel& m) { return m.lostUntil <= view.time; };
@@ -375,21 +443,11 @@ void Slei3dStrategy::planHandout(const agent::AgentView& view) {
     const auto space =
         planning::voxelGridMeetingSpace(map_->grid(), flight_->requiredClearance(map_->grid()));
     const auto decision = planning::decideMeetings(problem, box, space, options);
+    // No sampled meeting point anywhere (the reference would meet at the pose itself): all of
+    // it to the inspector free soonest, met where its plan ends.
     if (decision.choice == planning::MeetingChoice::NoFeasibleMeeting &&
-        problem.explorationFinished) {
-      // No sampled meeting point anywhere (the reference would meet at the pose itself): all
-      // of it to the inspector free soonest, met where its plan ends.
-      size_t first = 0;
-      for (size_t i = 1; i < problem.inspectors.size(); ++i)
-        if (problem.inspectors[i].poses.back().start < problem.inspectors[first].poses.back().start)
-          first = i;
-      Handout handout;
-      handout.inspector = modelOf[first];
-      handout.place = problem.inspectors[first].poses.back().position;
-      handout.time = problem.inspectors[first].poses.back().start;
-      handout.orders.tasks = pending_;
-      planned.push_back(std::move(handout));
-    }
+        problem.explorationFinished)
+      planned = handToFreeSoonest(view, true);
     if (decision.choice != planning::MeetingChoice::Meet && planned.empty()) return;
     // The inspectors' windows are predictions, and real flights run late: a meeting the
     // explorer would wait long for (the inspector finishing a long list first) waits while
@@ -419,6 +477,11 @@ void Slei3dStrategy::planHandout(const agent::AgentView& view) {
       planned.push_back(std::move(handout));
     }
   }
+  startHandouts(std::move(planned));
+}
+
+// Numbers the orders, takes the handed features off the pending list, and flies to the first.
+void Slei3dStrategy::startHandouts(std::vector<Handout> planned) {
   std::vector<uint8_t> handed(pending_.size(), 0);
   for (auto& handout : planned) {
     auto& model = inspectors_[handout.inspector];
@@ -531,7 +594,10 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
           lastSend_ = view.time;
           Report report;
           report.box = box_;
-          report.boxFinished = box_ < 0 || (explorationFinished_ && pending_.empty());
+          // explore-then-inspect moves on with its features still pending.
+          report.boxFinished =
+              box_ < 0 || (explorationFinished_ &&
+                           (pending_.empty() || options_.variant == SleiVariant::ExploreFirst));
           report.remaining = predictRemaining(view);
           report.meetingNumber = meetingNumber_;
           send(command, stationIndex, kReportTopic, encode(report));
@@ -552,6 +618,9 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
           command.assignedFeatures.push_back(task.id);
         }
         model.missed = 0;
+        // Met once its list should be done: what it reported inspected is on board, and
+        // the rest it skipped (or will not do): nothing more to wait for.
+        if (handout.collect) model.tasks.clear();
         if (handout.orders.waitAt) {
           model.home = *handout.orders.waitAt;  // it goes there once its list is done
           model.waitAt.reset();

@@ -68,7 +68,7 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
     if (report->boxFinished && report->box >= 0) {
       // Rolling assignment: the free box nearest the finished one, for the whole subgroup
       // (slei-pre: the next of its fixed order).
-      if (options_.variant == SleiVariant::Pre) {
+      if (fixedRegions()) {
         auto& order = boxOrder_[explorer];
         reply.box = order.empty() ? -1 : order.front();
         if (!order.empty()) order.erase(order.begin());
@@ -89,10 +89,10 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
       // arrival time best matches the planned time (planning::bestTimedMeetingCorner), was
       // tried only while the station drove straight (it stopped at a wall on the far side of a
       // box for the rest of a slei-a run); not yet with its ground paths.
-      Vec3 place = reply.box >= 0 ? boxCorner(boxes_[static_cast<size_t>(reply.box)],
+      Vec3 place = reply.box >= 0 ? boxCorner(boxes_, static_cast<size_t>(reply.box),
                                               options_.plan.cornerOffset, here.z(), here)
                                   : here;
-      if (options_.variant == SleiVariant::Fix) place = here, lead = options_.fixInterval;
+      if (staticStation()) place = staticPlace_, lead = options_.fixInterval;
       reply.next = {place, view.time + lead};
     }
     schedule_.erase(std::remove_if(schedule_.begin(), schedule_.end(),
@@ -112,10 +112,11 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
   const Vec3 here = view.odometry.position;
   if (!plan_) {
     plan_ = makeFleetPlan(unit_.fleet, boxes_, here, groundZ_, view.time, options_.plan);
-    if (options_.variant == SleiVariant::Fix)
+    staticPlace_ = here;
+    if (staticStation())
       for (auto& s : plan_->subgroups)
-        s.firstMeeting = {here, view.time + options_.fixInterval};
-    if (options_.variant == SleiVariant::Pre) {
+        s.firstMeeting = {staticPlace_, view.time + options_.fixInterval};
+    if (fixedRegions()) {
       std::vector<int32_t> first;
       for (const auto& s : plan_->subgroups)
         first.push_back(s.box);
@@ -145,7 +146,7 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
   }
   const double distance =
       std::hypot(next.meeting.place.x() - here.x(), next.meeting.place.y() - here.y());
-  if (options_.variant != SleiVariant::Fix) driveStation(view, next.meeting.place, command);
+  if (!staticStation()) driveStation(view, next.meeting.place, command);
   command.activity =
       distance > kArrived ? agent::Activity::TravellingToMeeting : agent::Activity::Waiting;
   return command;

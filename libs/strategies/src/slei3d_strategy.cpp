@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "coinspect/strategies/runtime/box_geometry.h"
 #include "coinspect/strategies/runtime/camera_aim.h"
@@ -16,6 +17,7 @@ namespace {
 constexpr double kFloodPeriod = 1.0;   // s between broadcasts of the plan
 constexpr double kFloodUntil = 120.0;  // s: by then every robot holds the plan
 constexpr size_t kFramesPerDecision = 8;
+constexpr double kRelayCircle = 3.0;  // m from caric-team's relay where its inspectors wait
 
 }  // namespace
 
@@ -68,8 +70,23 @@ const Subgroup* Slei3dStrategy::subgroupOf(uint32_t unit) const {
 }
 
 Vec3 Slei3dStrategy::firstWaitPoint(const Subgroup& subgroup, size_t k) const {
+  if (options_.variant == SleiVariant::Team) {
+    // caric-team: every inspector waits around the relay (the first meeting place of every
+    // subgroup), in link with the station, on a circle in the order of the fleet.
+    size_t index = 0, count = 0;
+    for (const auto& s : plan_->subgroups)
+      for (const uint32_t unit : s.inspectors) {
+        if (unit == subgroup.inspectors[k]) index = count;
+        ++count;
+      }
+    const double angle = 2.0 * M_PI * static_cast<double>(index) / static_cast<double>(count);
+    const Vec3& relay = subgroup.firstMeeting.place;
+    return Vec3(relay.x() + kRelayCircle * std::cos(angle),
+                relay.y() + kRelayCircle * std::sin(angle), groundZ_ + options_.meetHeight);
+  }
   const auto& box = boxes_[static_cast<size_t>(subgroup.box)];
-  const Vec3 corner = boxCorner(box, options_.plan.cornerOffset, 0.0, subgroup.firstMeeting.place);
+  const Vec3 corner = boxCorner(boxes_, static_cast<size_t>(subgroup.box),
+                                options_.plan.cornerOffset, 0.0, subgroup.firstMeeting.place);
   return awayFromBox(box, corner, 2.5 * static_cast<double>(k + 1), groundZ_ + options_.waitHeight);
 }
 
@@ -192,19 +209,18 @@ SleiOptions readOptions(const Config& config) {
 }  // namespace
 
 void registerSlei3d(agent::StrategyRegistry& registry) {
-  registry.registerStrategy("slei3d", [](const agent::StrategyContext& context) {
-    return std::make_unique<Slei3dStrategy>(context, readOptions(context.config));
-  });
-  registry.registerStrategy("slei-pre", [](const agent::StrategyContext& context) {
-    auto options = readOptions(context.config);
-    options.variant = SleiVariant::Pre;
-    return std::make_unique<Slei3dStrategy>(context, options);
-  });
-  registry.registerStrategy("slei-fix", [](const agent::StrategyContext& context) {
-    auto options = readOptions(context.config);
-    options.variant = SleiVariant::Fix;
-    return std::make_unique<Slei3dStrategy>(context, options);
-  });
+  const std::pair<const char*, SleiVariant> variants[] = {
+      {"slei3d", SleiVariant::Slei3d},
+      {"slei-pre", SleiVariant::Pre},
+      {"slei-fix", SleiVariant::Fix},
+      {"caric-team", SleiVariant::Team},
+      {"explore-then-inspect", SleiVariant::ExploreFirst}};
+  for (const auto& [name, variant] : variants)
+    registry.registerStrategy(name, [variant = variant](const agent::StrategyContext& context) {
+      auto options = readOptions(context.config);
+      options.variant = variant;
+      return std::make_unique<Slei3dStrategy>(context, options);
+    });
 }
 
 }  // namespace coinspect::strategies::slei

@@ -91,6 +91,28 @@ Vec3 boxCorner(const agent::BoxView& box, double offset, double z, const Vec3& f
   return planning::nearestMeetingCorner(bounds.min - grow, bounds.max + grow, from, options).point;
 }
 
+Vec3 boxCorner(const std::vector<agent::BoxView>& boxes, size_t index, double offset, double z,
+               const Vec3& from) {
+  const auto outside = [&](const Vec3& p) {
+    return std::none_of(boxes.begin(), boxes.end(), [&](const agent::BoxView& box) {
+      const Vec3 local = box.rotation.transpose() * (p - box.center);
+      return std::abs(local.x()) < 0.5 * box.size.x() && std::abs(local.y()) < 0.5 * box.size.y();
+    });
+  };
+  const Vec3 nearest = boxCorner(boxes[index], offset, z, from);
+  if (outside(nearest)) return nearest;
+  const auto bounds = runtime::boxBounds(boxes[index]);
+  Vec3 best = nearest;
+  double bestDistance = std::numeric_limits<double>::infinity();
+  for (const double x : {bounds.min.x() - offset, bounds.max.x() + offset})
+    for (const double y : {bounds.min.y() - offset, bounds.max.y() + offset}) {
+      const Vec3 corner(x, y, z);
+      const double d = std::hypot(x - from.x(), y - from.y());
+      if (outside(corner) && d < bestDistance) bestDistance = d, best = corner;
+    }
+  return best;
+}
+
 Vec3 awayFromBox(const agent::BoxView& box, const Vec3& corner, double distance, double z) {
   Vec3 out(corner.x() - box.center.x(), corner.y() - box.center.y(), 0.0);
   const double norm = out.norm();
@@ -136,7 +158,7 @@ FleetPlan makeFleetPlan(const std::vector<agent::FleetMember>& fleet,
   for (auto& s : plan.subgroups) {
     if (s.box < 0) continue;
     const Vec3 corner =
-        boxCorner(boxes[static_cast<size_t>(s.box)], options.cornerOffset, groundZ, at);
+        boxCorner(boxes, static_cast<size_t>(s.box), options.cornerOffset, groundZ, at);
     time += horizontal(corner, at) / options.stationSpeed + options.legBuffer;
     s.firstMeeting = {corner, time};
     at = corner;

@@ -59,6 +59,24 @@ TEST(SleiFleetPlan, CornersLieOutsideTheBoxAndAwayFromIt) {
   EXPECT_DOUBLE_EQ(away.z(), 6.0);
 }
 
+TEST(SleiFleetPlan, CornersInsideAnotherBoxAreSkipped) {
+  // Four boxes as the quadrants of one building (slei-b): the inner corner of a quadrant, 2 m
+  // out in x and y, lies inside the diagonally opposite one.
+  std::vector<agent::BoxView> boxes;
+  for (const double x : {-4.0, 4.0})
+    for (const double y : {-4.0, 4.0})
+      boxes.push_back(makeBox({x, y, 5}, {8, 8, 10}));
+  const Vec3 from(20, 25, 0);
+  EXPECT_TRUE(boxCorner(boxes[0], 2.0, 0.5, from).isApprox(Vec3(2, 2, 0.5)));
+  EXPECT_TRUE(boxCorner(boxes, 0, 2.0, 0.5, from).isApprox(Vec3(-10, 2, 0.5)));
+  // Nothing in the way: the same corner as for the box alone.
+  EXPECT_TRUE(boxCorner(boxes, 1, 2.0, 0.5, from).isApprox(boxCorner(boxes[1], 2.0, 0.5, from)));
+  // Every corner inside some box: the nearest.
+  const std::vector<agent::BoxView> nested{makeBox({0, 0, 5}, {2, 2, 10}),
+                                           makeBox({0, 0, 5}, {40, 40, 10})};
+  EXPECT_TRUE(boxCorner(nested, 0, 2.0, 0.5, from).isApprox(boxCorner(nested[0], 2.0, 0.5, from)));
+}
+
 TEST(SleiFleetPlan, ExplorersTakeTheNearestBoxesInTurnAndMeetTheStationInAChain) {
   std::vector<agent::FleetMember> fleet{
       {"gcs", agent::Role::GroundStation}, {"e1", agent::Role::Explorer},

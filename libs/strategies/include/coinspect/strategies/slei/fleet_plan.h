@@ -36,6 +36,11 @@ std::vector<std::vector<int32_t>> fixedBoxOrders(const std::vector<agent::BoxVie
 // here hug their structure, so the corners are outside, where the ground station can stand and
 // a UAV can fly before anything is mapped.
 Vec3 boxCorner(const agent::BoxView& box, double offset, double z, const Vec3& from);
+// The same for boxes[index], skipping corners that fall inside another box's footprint (slei-b's
+// four boxes share one building: a corner between two of them is inside it, where the station
+// cannot drive); the nearest corner when every one does.
+Vec3 boxCorner(const std::vector<agent::BoxView>& boxes, size_t index, double offset, double z,
+               const Vec3& from);
 
 // `corner` moved `distance` m horizontally away from the box's footprint centre, at height z:
 // where a UAV waits near a corner without crowding the structure or the station there.

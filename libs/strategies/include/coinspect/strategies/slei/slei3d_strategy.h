@@ -36,10 +36,16 @@
 
 namespace coinspect::strategies::slei {
 
-// The paper's baselines that differ from SLEI3D only in the station's layer: SLEI-PRE (each
-// explorer's boxes in an order fixed at the start, no rolling assignment) and SLEI-FIX (the
-// station does not move; explorers come back to it at fixed intervals).
-enum class SleiVariant { Slei3d, Pre, Fix };
+// The paper's baselines, flown with SLEI3D's own exploration, flight and messages so that a
+// comparison measures the layer each one changes (doc/strategies.md, "Baselines"):
+// - Pre: SLEI-PRE, each explorer's boxes in an order fixed at the start (no rolling choice);
+// - Fix: SLEI-FIX, the station does not move; explorers come back to it at fixed intervals;
+// - Team: CARIC-style teams (`caric-team`): each team a fixed region (Pre's dealt boxes), a
+//   static station as the relay hub (Fix's returns) where the inspectors wait between lists,
+//   and the explorer hands features to the inspector free soonest, no meeting optimisation;
+// - ExploreFirst: exploration, then inspection (MU-CPPI style, `explore-then-inspect`): the
+//   explorers explore every box before handing out any feature; the inspectors wait meanwhile.
+enum class SleiVariant { Slei3d, Pre, Fix, Team, ExploreFirst };
 
 struct SleiOptions {
   SleiVariant variant = SleiVariant::Slei3d;
@@ -78,9 +84,16 @@ class Slei3dStrategy : public agent::Strategy {
   agent::AgentCommand fly(const agent::AgentView& view, std::optional<Vec3> aim);
   const Subgroup* subgroupOf(uint32_t unit) const;
   // Where the k-th inspector of a subgroup waits for its first orders: off the corner of the
-  // first box where the station first meets the explorer, 2.5 m apart, away from the box.
+  // first box where the station first meets the explorer, 2.5 m apart, away from the box
+  // (caric-team: around the relay).
   Vec3 firstWaitPoint(const Subgroup& subgroup, size_t k) const;
   double boxExploredFraction(int32_t box) const;
+  bool fixedRegions() const {
+    return options_.variant == SleiVariant::Pre || options_.variant == SleiVariant::Team;
+  }
+  bool staticStation() const {
+    return options_.variant == SleiVariant::Fix || options_.variant == SleiVariant::Team;
+  }
 
   // ---- station (slei3d_station.cpp)
   struct StationMeeting {
@@ -104,6 +117,8 @@ class Slei3dStrategy : public agent::Strategy {
   void enterBox(const agent::AgentView& view, int32_t box);
   // Done with the box before the meeting: the station's stop where it can be caught soonest.
   void goToStation(const agent::AgentView& view, const Vec3& place);
+  Vec3 meetingPointNear(const agent::AgentView& view, const Vec3& partner, const Vec3& fallback,
+                        bool above) const;
   double lastApproach_ = -1e300;
   // `by`: when the station should be there.
   std::optional<Vec3> earlyStop(const agent::AgentView& view, double* by) const;
@@ -130,6 +145,7 @@ class Slei3dStrategy : public agent::Strategy {
   std::map<uint32_t, Reply> answered_;                 // per explorer: the last reply sent
   std::vector<uint8_t> boxTaken_;                      // per box: assigned to some subgroup
   std::map<uint32_t, std::vector<int32_t>> boxOrder_;  // slei-pre: per explorer, boxes left
+  Vec3 staticPlace_ = Vec3::Zero();  // where it started: a static station stays there
   // Its ground paths: around the boxes' footprints and where it found its way blocked.
   std::unique_ptr<planning::GroundGrid> ground_;
   std::vector<planning::Vec2> drive_;  // waypoints to the next meeting place
@@ -196,8 +212,18 @@ class Slei3dStrategy : public agent::Strategy {
     Vec3 place = Vec3::Zero();
     double time = 0.0;  // planned meeting time; given up meetingGrace after it
     Orders orders;
+    bool collect = false;  // no features: to take its results once its list is done
   };
   std::vector<Handout> handouts_;  // in the order they are flown
+  // All pending features to the inspector free soonest, met where its plan ends (caric-team's
+  // rule, and slei3d's when SOEI finds no meeting point after exploring); none when the
+  // explorer would wait long for it while exploring remains.
+  std::vector<Handout> handToFreeSoonest(const agent::AgentView& view,
+                                         bool explorationFinished) const;
+  // No box left and nothing pending: meet each inspector that still has features where its
+  // list ends, to carry its results to the station.
+  std::vector<Handout> planCollection(const agent::AgentView& view) const;
+  void startHandouts(std::vector<Handout> planned);
   // The inspector's hover windows as the explorer predicts them (SOEI's input).
   planning::InspectorPlan predictedPlan(const InspectorModel& model, double now) const;
 
