@@ -21,6 +21,7 @@ constexpr double kApproachReach = 4.5;      // m: within the 5 m link with a mar
 constexpr double kApproachRetry = 3.0;      // s between approaches after a failed flight
 constexpr double kEarlyPatience = 30.0;     // s past the expected time at an early stop
 constexpr double kLostFor = 60.0;           // s an inspector missed twice is not looked for
+constexpr double kPresumedFailed = 120.0;   // s without its status: a missed inspector failed
 constexpr double kMaxHandoutWait = 15.0;    // s an explorer may plan to wait for an inspector
 constexpr double kTurnTime = 1.5;           // s at a sweep stop for the heading to come round
 constexpr double kSurfaceNearBox = 1.0;     // m: mapped surface this close to the box is its own
@@ -33,6 +34,7 @@ constexpr double kLeaveMargin = 10.0;       // s: leave for the station this ear
 constexpr double kTravelFactor = 1.5;       // paths are longer than straight lines
 constexpr double kSettle = 2.0;             // s an inspector needs at a pose beyond t_q
 constexpr double kInspectionTime = 3.0;     // s, t_q ([features] inspect_time's default)
+constexpr double kHubReach = 10.0;          // m from caric-team's hub where it hands out
 constexpr double kPoseTravel = 5.0;         // s between two poses of a list, a rough guess
 constexpr double kNoMeeting = 1e299;
 
@@ -121,10 +123,13 @@ void Slei3dStrategy::readStatus(const agent::AgentView& view) {
         if (n.name == message.from) model.position = n.odometry.position;
       model.since = view.time;
       model.lostUntil = 0.0;  // in contact: found
-      model.tasks.erase(
-          std::remove_if(model.tasks.begin(), model.tasks.end(),
-                         [&](const FeatureTask& t) { return reportedInspected_.count(t.id) > 0; }),
-          model.tasks.end());
+      model.heard = view.time;
+      const auto done = [&](const FeatureTask& t) { return reportedInspected_.count(t.id) > 0; };
+      model.tasks.erase(std::remove_if(model.tasks.begin(), model.tasks.end(), done),
+                        model.tasks.end());
+      model.unconfirmed.erase(
+          std::remove_if(model.unconfirmed.begin(), model.unconfirmed.end(), done),
+          model.unconfirmed.end());
     }
   }
 }
@@ -411,8 +416,15 @@ void Slei3dStrategy::planHandout(const agent::AgentView& view) {
   // Nothing left to explore nor to hand out: the inspectors' results are still to be carried
   // to the station (the last features of a run were inspected and never collected).
   if (box_ < 0 && pending_.empty()) return startHandouts(planCollection(view));
-  if (options_.variant == SleiVariant::Team)
-    return startHandouts(handToFreeSoonest(view, explorationFinished_ || box_ < 0));
+  if (options_.variant == SleiVariant::Team) {
+    // caric-team hands out at the hub, on its returns to the station (and once its boxes are
+    // done): flying back for every feature found kept it from exploring.
+    auto planned = handToFreeSoonest(view, explorationFinished_ || box_ < 0);
+    const Vec3 hub = subgroupOf(static_cast<uint32_t>(unit_.self))->firstMeeting.place;
+    const bool atHub = (view.odometry.position - hub).norm() <= kHubReach;
+    if (atHub || box_ < 0) startHandouts(std::move(planned));
+    return;
+  }
   // Inspectors missed twice in a row are left out for a while: the explorer does not know
   // where they are, and looking for them again and again kept it from exploring for minutes.
   const auto reachable = [&](const InspectorModel& m) { return m.lostUntil <= view.time; };
@@ -618,6 +630,7 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
           command.assignedFeatures.push_back(task.id);
         }
         model.missed = 0;
+        model.unconfirmed.clear();  // alive: it keeps its list
         // Met once its list should be done: what it reported inspected is on board, and
         // the rest it skipped (or will not do): nothing more to wait for.
         if (handout.collect) model.tasks.clear();
@@ -634,10 +647,20 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
         --model.sequence;
         model.position = model.home;
         model.since = view.time;
+        model.unconfirmed.insert(model.unconfirmed.end(), model.tasks.begin(), model.tasks.end());
         model.tasks.clear();
         if (++model.missed >= 2) {
           model.missed = 0;
           model.lostUntil = view.time + kLostFor;
+          // Not heard for long either: presumed failed (the paper's inspector failure), what it
+          // was given and has not reported inspected goes to the others. If it is alive after
+          // all, both may inspect a feature: time lost, no feature. (Missed twice alone was
+          // common for live inspectors: handing their lists out again cost 14 features in a
+          // slei-a run.)
+          if (view.time - model.heard > kPresumedFailed) {
+            pending_.insert(pending_.end(), model.unconfirmed.begin(), model.unconfirmed.end());
+            model.unconfirmed.clear();
+          }
         }
         pending_.insert(pending_.begin(), handout.orders.tasks.begin(), handout.orders.tasks.end());
         flight_->hover();

@@ -69,9 +69,10 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
       // Rolling assignment: the free box nearest the finished one, for the whole subgroup
       // (slei-pre: the next of its fixed order).
       if (fixedRegions()) {
-        auto& order = boxOrder_[explorer];
-        reply.box = order.empty() ? -1 : order.front();
-        if (!order.empty()) order.erase(order.begin());
+        const size_t index = subgroupIndex(explorer);
+        auto* order = index < boxOrder_.size() ? &boxOrder_[index] : nullptr;
+        reply.box = !order || order->empty() ? -1 : order->front();
+        if (order && !order->empty()) order->erase(order->begin());
       } else {
         reply.box =
             nearestFreeBox(boxes_, boxTaken_, boxes_[static_cast<size_t>(report->box)].center);
@@ -107,6 +108,26 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
   }
 }
 
+void Slei3dStrategy::releaseBox(uint32_t explorer) {
+  const auto answered = answered_.find(explorer);
+  int32_t box = answered != answered_.end() ? answered->second.box : -1;
+  if (answered == answered_.end() && plan_)
+    for (const auto& s : plan_->subgroups)
+      if (s.explorer == explorer) box = s.box;
+  if (box < 0) return;
+  if (!fixedRegions()) {
+    boxTaken_[static_cast<size_t>(box)] = 0;
+    return;
+  }
+  giveBoxToShortestOrder(boxOrder_, subgroupIndex(explorer), box);
+}
+
+size_t Slei3dStrategy::subgroupIndex(uint32_t explorer) const {
+  for (size_t i = 0; i < plan_->subgroups.size(); ++i)
+    if (plan_->subgroups[i].explorer == explorer) return i;
+  return plan_->subgroups.size();
+}
+
 agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) {
   agent::AgentCommand command;
   const Vec3 here = view.odometry.position;
@@ -120,9 +141,7 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
       std::vector<int32_t> first;
       for (const auto& s : plan_->subgroups)
         first.push_back(s.box);
-      const auto orders = fixedBoxOrders(boxes_, first);
-      for (size_t i = 0; i < orders.size(); ++i)
-        boxOrder_[plan_->subgroups[i].explorer] = orders[i];
+      boxOrder_ = fixedBoxOrders(boxes_, first);
     }
     planBytes_ = encode(*plan_);
     for (const auto& s : plan_->subgroups) {
@@ -137,9 +156,12 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
     return command;
   }
   // An explorer that does not come within a long grace of its meeting is presumed lost: the
-  // station goes on to the next one.
+  // station goes on to the next one, and its box goes back to the free ones (the paper's failure
+  // recovery: the next subgroup done with a box takes it). An explorer that turns up again is
+  // answered as usual.
   const auto& next = schedule_.front();
   if (view.time > next.meeting.time + kPresumedLost * options_.meetingGrace) {
+    releaseBox(next.explorer);
     schedule_.erase(schedule_.begin());
     orderSchedule(view);
     return command;

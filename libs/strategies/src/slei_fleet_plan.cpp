@@ -82,6 +82,13 @@ std::vector<std::vector<int32_t>> fixedBoxOrders(const std::vector<agent::BoxVie
   return orders;
 }
 
+void giveBoxToShortestOrder(std::vector<std::vector<int32_t>>& orders, size_t lost, int32_t box) {
+  std::vector<int32_t>* shortest = nullptr;
+  for (size_t i = 0; i < orders.size(); ++i)
+    if (i != lost && (!shortest || orders[i].size() < shortest->size())) shortest = &orders[i];
+  if (shortest) shortest->push_back(box);
+}
+
 Vec3 boxCorner(const agent::BoxView& box, double offset, double z, const Vec3& from) {
   const auto bounds = runtime::boxBounds(box);
   const Vec3 grow(offset, offset, 0.0);

@@ -104,5 +104,18 @@ TEST(SleiFleetPlan, ExplorersTakeTheNearestBoxesInTurnAndMeetTheStationInAChain)
   EXPECT_NEAR(second.time, first.time + 10.0 + 20.0, 1e-9);
 }
 
+TEST(SleiFleetPlan, ALostSubgroupsBoxGoesToTheShortestOtherOrder) {
+  std::vector<std::vector<int32_t>> orders{{1, 2}, {3}, {4}};
+  giveBoxToShortestOrder(orders, 1, 7);  // 1 is lost: 2 is the shortest of the others
+  EXPECT_EQ(orders[2], (std::vector<int32_t>{4, 7}));
+  giveBoxToShortestOrder(orders, 2, 8);  // 1 (one box) is shorter than 0 (two)
+  EXPECT_EQ(orders[1], (std::vector<int32_t>{3, 8}));
+  giveBoxToShortestOrder(orders, 2, 9);  // 0 and 1 both hold two: the lower index
+  EXPECT_EQ(orders[0], (std::vector<int32_t>{1, 2, 9}));
+  std::vector<std::vector<int32_t>> alone{{5}};
+  giveBoxToShortestOrder(alone, 0, 6);  // nobody else: the box stays unexplored
+  EXPECT_EQ(alone[0], (std::vector<int32_t>{5}));
+}
+
 }  // namespace
 }  // namespace coinspect::strategies::slei

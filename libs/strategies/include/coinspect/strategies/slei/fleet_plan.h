@@ -30,6 +30,10 @@ int32_t nearestFreeBox(const std::vector<agent::BoxView>& boxes,
 std::vector<std::vector<int32_t>> fixedBoxOrders(const std::vector<agent::BoxView>& boxes,
                                                  const std::vector<int32_t>& firstBoxes);
 
+// Failure recovery with fixed orders: the box of the lost subgroup `lost` goes to the end of the
+// shortest list of the others (ties to the lower index); nothing when there is no other.
+void giveBoxToShortestOrder(std::vector<std::vector<int32_t>>& orders, size_t lost, int32_t box);
+
 // Of the four corners of the box's world-aligned bounds moved `offset` m outwards in x and y,
 // at height z, the one nearest (horizontally) to `from` (planning::nearestMeetingCorner). The
 // reference uses corners 1 m inside the box (its robots' maps extend 2 m beyond it); the boxes

@@ -103,6 +103,9 @@ class Slei3dStrategy : public agent::Strategy {
   agent::AgentCommand decideStation(const agent::AgentView& view);
   void answerReports(const agent::AgentView& view, agent::AgentCommand& command);
   void orderSchedule(const agent::AgentView& view);
+  // An explorer presumed lost: its box is given to the next subgroup that asks for one.
+  void releaseBox(uint32_t explorer);
+  size_t subgroupIndex(uint32_t explorer) const;  // of the plan's subgroups (size(): none)
 
   // ---- explorer (slei3d_explorer.cpp)
   enum class ExplorerPhase { ToBox, Exploring, ToStation, AtStation, ToInspector, Done };
@@ -141,11 +144,11 @@ class Slei3dStrategy : public agent::Strategy {
   std::vector<agent::BoxView> boxes_;
 
   // Station.
-  std::vector<StationMeeting> schedule_;               // upcoming meetings, in the order served
-  std::map<uint32_t, Reply> answered_;                 // per explorer: the last reply sent
-  std::vector<uint8_t> boxTaken_;                      // per box: assigned to some subgroup
-  std::map<uint32_t, std::vector<int32_t>> boxOrder_;  // slei-pre: per explorer, boxes left
-  Vec3 staticPlace_ = Vec3::Zero();  // where it started: a static station stays there
+  std::vector<StationMeeting> schedule_;        // upcoming meetings, in the order served
+  std::map<uint32_t, Reply> answered_;          // per explorer: the last reply sent
+  std::vector<uint8_t> boxTaken_;               // per box: assigned to some subgroup
+  std::vector<std::vector<int32_t>> boxOrder_;  // fixed orders: per subgroup, boxes left
+  Vec3 staticPlace_ = Vec3::Zero();             // where it started: a static station stays there
   // Its ground paths: around the boxes' footprints and where it found its way blocked.
   std::unique_ptr<planning::GroundGrid> ground_;
   std::vector<planning::Vec2> drive_;  // waypoints to the next meeting place
@@ -200,10 +203,14 @@ class Slei3dStrategy : public agent::Strategy {
     Vec3 position = Vec3::Zero();  // where it was (or will be) at `since`
     double since = 0.0;
     std::vector<FeatureTask> tasks;  // given, not known to be inspected
-    std::optional<Vec3> waitAt;      // to pass on with the next orders
-    Vec3 home = Vec3::Zero();        // its wait point: where it goes with nothing to inspect
-    int missed = 0;                  // hand-outs in a row it was not found for
-    double lostUntil = 0.0;          // not looked for before this time
+    // Given before a missed meeting, not known to be inspected: handed out again when the
+    // inspector is presumed failed.
+    std::vector<FeatureTask> unconfirmed;
+    std::optional<Vec3> waitAt;  // to pass on with the next orders
+    Vec3 home = Vec3::Zero();    // its wait point: where it goes with nothing to inspect
+    int missed = 0;              // hand-outs in a row it was not found for
+    double lostUntil = 0.0;      // not looked for before this time
+    double heard = 0.0;          // its last status
   };
   std::vector<InspectorModel> inspectors_;
   // A planned meeting with an inspector (SOEI): where, when, and its orders.
