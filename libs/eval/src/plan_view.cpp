@@ -10,6 +10,7 @@
 #include "coinspect/eval/bitmap_font.h"
 #include "coinspect/eval/canvas.h"
 #include "coinspect/eval/run_plots.h"
+#include "coinspect/record/observations.h"
 #include "legend.h"
 #include "plot_axes.h"
 
@@ -29,6 +30,7 @@ constexpr Rgb kBoxColor{40, 110, 220};
 constexpr Rgb kGroundLine{150, 120, 90};
 constexpr Rgb kBelowGround{244, 240, 232};
 constexpr Rgb kDeathColor{20, 20, 20};
+constexpr Rgb kMeetingColor{0, 0, 0};  // a meeting of two units (feature missions)
 constexpr Rgb kPointOutline{45, 45, 45};
 
 // (u, v) plane coordinates and the depth toward the viewer (larger = nearer).
@@ -185,6 +187,18 @@ RgbImage renderPlanView(const world::Scenario& scenario, const RunTracks& tracks
   legend.push_back({detail::LegendEntry::Kind::Marker, "end", kText, Marker::Square});
   if (anyDeath)
     legend.push_back({detail::LegendEntry::Kind::Marker, "lost", kDeathColor, Marker::Cross});
+  // Meetings (feature missions: two units linked again after a gap), where data changed hands.
+  std::vector<Vec3> meetings;
+  for (const auto& event : tracks.events) {
+    if (event.kind != record::MissionEventKind::Meeting) continue;
+    const int a = tracks.unitIndex(event.unit), b = tracks.unitIndex(event.detail);
+    if (a < 0 || b < 0 || tracks.units[a].poses.empty() || tracks.units[b].poses.empty()) continue;
+    meetings.push_back(0.5 * (poseAt(tracks.units[a], event.time).position +
+                              poseAt(tracks.units[b], event.time).position));
+  }
+  if (!meetings.empty())
+    legend.push_back(
+        {detail::LegendEntry::Kind::Marker, "meeting", kMeetingColor, Marker::Triangle});
   legend.push_back({detail::LegendEntry::Kind::Box, "inspection box", kBoxColor});
   legend.push_back({detail::LegendEntry::Kind::ScoreBar, "point score 0..1", kText});
   legend.push_back({detail::LegendEntry::Kind::Unscored, "not scored", kUnscoredColor});
@@ -318,6 +332,11 @@ RgbImage renderPlanView(const world::Scenario& scenario, const RunTracks& tracks
       pixel(poseAt(unit, *unit.deathTime).position, x, y);
       drawMarker(image, x, y, Marker::Cross, markerSize + 2.0 * s, kDeathColor);
     }
+  }
+  for (const Vec3& place : meetings) {
+    double x, y;
+    pixel(place, x, y);
+    drawMarker(image, x, y, Marker::Triangle, markerSize, kMeetingColor);
   }
 
   // Frame, ticks, labels, title, legend: drawn last, over anything that crossed the border.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "coinspect/record/observations.h"
 #include "coinspect/testing/paths.h"
 #include "picture_run.h"
 
@@ -92,6 +93,27 @@ TEST_F(RunPlots, TopViewShowsTrajectoriesScoredPointsAndStructure) {
   frame.toPixel(world::Vec3(-9.0, 9.0, 0.0), x, y);
   const Rgb outside = image.at(static_cast<int>(x), static_cast<int>(y));
   EXPECT_GE(outside.r, 236);
+}
+
+TEST_F(RunPlots, TopViewMarksMeetingsBetweenTheUnits) {
+  // Without a meeting event no meeting marker; with one, a black triangle halfway between the
+  // two units at that time (and a legend entry).
+  const Rgb meeting{0, 0, 0};
+  const RgbImage before = renderPlanView(scenario_, tracks_, PlanAxis::Top, 480, 360);
+  EXPECT_EQ(countIn(before, 0, 0, 480, 360, meeting), 0);
+  RunEvent event;
+  event.time = 4.5;
+  event.kind = record::MissionEventKind::Meeting;
+  event.unit = tracks_.units[1].name;
+  event.detail = tracks_.units[2].name;
+  tracks_.events.push_back(event);
+  PlanFrame frame;
+  const RgbImage image = renderPlanView(scenario_, tracks_, PlanAxis::Top, 480, 360, &frame);
+  double x, y;
+  frame.toPixel(0.5 * (test::alphaAt(4.5) + test::bravoAt(4.5)), x, y);
+  EXPECT_GT(countNear(image, x, y, 3, meeting), 5);
+  // The legend's marker, right of the plot.
+  EXPECT_GT(countIn(image, frame.right + 1, 0, 480, 360, meeting), 5);
 }
 
 TEST_F(RunPlots, SideViewShowsTheLossAndTheNearestPoints) {
