@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   coinspect::app::addEvalCommand(app);
   coinspect::app::addRenderCommand(app);
   coinspect::app::addReplayCommand(app);
+  coinspect::app::addPlotFeaturesCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

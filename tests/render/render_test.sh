@@ -8,16 +8,8 @@ coinspect=$1
 source_dir=$2
 out=$3
 source "$(dirname "$0")/../record_short_run.sh"
+source "$(dirname "$0")/../check_png.sh"
 record_short_run "$coinspect" "$source_dir" "$out" 6
-
-# check_png FILE WIDTH HEIGHT: the PNG signature, then IHDR's width and height (big-endian).
-check_png() {
-  local signature size
-  signature=$(od -An -tx1 -N8 "$1" | tr -d ' \n')
-  [[ $signature == 89504e470d0a1a0a ]] || { echo "$1 is not a PNG"; exit 1; }
-  size=$(od -An -tu1 -j16 -N8 "$1" | awk '{ print $1*16777216+$2*65536+$3*256+$4 "x" $5*16777216+$6*65536+$7*256+$8 }')
-  [[ $size == "$2x$3" ]] || { echo "$1 is $size, expected $2x$3"; exit 1; }
-}
 
 # Default folder: the rawlog's; the paths are printed in order.
 "$coinspect" render "$out/run/run.rawlog" --size 320x240 > "$out/render.log"

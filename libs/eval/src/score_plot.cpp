@@ -9,74 +9,18 @@
 #include "coinspect/eval/canvas.h"
 #include "coinspect/eval/run_plots.h"
 #include "coinspect/record/observations.h"
-#include "plot_axes.h"
+#include "plot_panel.h"
 
 namespace coinspect::eval {
 
 namespace {
 
-constexpr Rgb kWhite{255, 255, 255};
-constexpr Rgb kText{35, 35, 35};
-constexpr Rgb kFrame{110, 110, 110};
-constexpr Rgb kGrid{232, 232, 232};
+using detail::Panel;
+
 constexpr Rgb kScoreColor{31, 119, 180};
 constexpr Rgb kDetectedColor{215, 110, 20};
 constexpr Rgb kMissionEventColor{120, 120, 120};
 constexpr Rgb kDeathColor{190, 30, 30};
-
-struct Panel {
-  int left, top, right, bottom;  // pixels; the plot area is left <= x < right, top <= y < bottom
-  detail::NiceAxis x, y;
-  double px(double t) const { return left + (t - x.lo) / (x.hi - x.lo) * (right - 1 - left); }
-  double py(double v) const { return bottom - 1 - (v - y.lo) / (y.hi - y.lo) * (bottom - 1 - top); }
-};
-
-// Grid, frame, y ticks with labels, the y-axis title; x ticks (labels only when `xLabels`).
-void drawPanelAxes(RgbImage& image, const Panel& panel, const std::string& yTitle, bool xLabels,
-                   int scale) {
-  const int tick = 4 * scale;
-  for (double v : panel.y.ticks) {
-    const int y = static_cast<int>(std::lround(panel.py(v)));
-    fillRect(image, panel.left, y, panel.right, y + 1, kGrid);
-    fillRect(image, panel.left - tick, y, panel.left, y + 1, kFrame);
-    drawText(image, panel.left - tick - 3 * scale, y - textHeight(scale) / 2 + scale,
-             detail::tickLabel(v, panel.y.decimals), kText, scale, TextAlign::Right);
-  }
-  for (double t : panel.x.ticks) {
-    const int x = static_cast<int>(std::lround(panel.px(t)));
-    fillRect(image, x, panel.top, x + 1, panel.bottom, kGrid);
-    fillRect(image, x, panel.bottom, x + 1, panel.bottom + tick, kFrame);
-    if (xLabels)
-      drawText(image, x, panel.bottom + tick + 2 * scale, detail::tickLabel(t, panel.x.decimals),
-               kText, scale, TextAlign::Center);
-  }
-  strokeRect(image, panel.left - 1, panel.top - 1, panel.right + 1, panel.bottom + 1, kFrame);
-  drawTextUpward(image, 4 * scale, (panel.top + panel.bottom) / 2, yTitle, kText, scale,
-                 TextAlign::Center);
-}
-
-// A step curve from (0, 0) through the samples to the end of the axis, with a light fill below.
-void drawSteps(RgbImage& image, const Panel& panel,
-               const std::vector<std::pair<double, double>>& steps, Rgb color, int scale) {
-  std::vector<std::pair<double, double>> corners = {{panel.x.lo, 0.0}};
-  for (const auto& [t, v] : steps) {
-    corners.emplace_back(t, corners.back().second);
-    corners.emplace_back(t, v);
-  }
-  corners.emplace_back(panel.x.hi, corners.back().second);
-  const Rgb fill = mix(color, kWhite, 0.82);
-  for (size_t i = 1; i < corners.size(); ++i) {
-    const auto& [t0, v0] = corners[i - 1];
-    const auto& [t1, v1] = corners[i];
-    if (v0 != v1) continue;  // only horizontal runs enclose an area
-    const int x0 = static_cast<int>(std::lround(panel.px(t0)));
-    const int x1 = static_cast<int>(std::lround(panel.px(t1)));
-    fillRect(image, x0, static_cast<int>(std::lround(panel.py(v0))), x1 + 1, panel.bottom, fill);
-  }
-  for (size_t i = 1; i < corners.size(); ++i)
-    drawThickLine(image, panel.px(corners[i - 1].first), panel.py(corners[i - 1].second),
-                  panel.px(corners[i].first), panel.py(corners[i].second), 1.0 + scale, color);
-}
 
 struct EventMark {
   double time;
@@ -132,7 +76,7 @@ void drawEventMarks(RgbImage& image, const Panel& upper, const Panel& lower,
 }  // namespace
 
 RgbImage renderScorePlot(const RunTracks& tracks, const std::string& name, int width, int height) {
-  RgbImage image(width, height, kWhite);
+  RgbImage image(width, height, detail::kPlotBackground);
   const int s = labelScale(width, height);
   const int pad = 8 * s;
 
@@ -143,7 +87,7 @@ RgbImage renderScorePlot(const RunTracks& tracks, const std::string& name, int w
                   tracks.finalScore(), tracks.finalDetected(), tracks.pointCount);
   else
     std::snprintf(title, sizeof(title), "%s: no ground-station tally recorded", name.c_str());
-  drawText(image, width / 2, pad, title, kText, s, TextAlign::Center);
+  drawText(image, width / 2, pad, title, detail::kPlotText, s, TextAlign::Center);
 
   double maxScore = 0.0;
   uint64_t maxDetected = 0;
@@ -178,16 +122,18 @@ RgbImage renderScorePlot(const RunTracks& tracks, const std::string& name, int w
   upper.x = lower.x =
       detail::niceAxis(0.0, endTime, std::max(2, (upper.right - left) / (70 * s)), false);
 
-  drawPanelAxes(image, upper, "score Q", false, s);
-  drawPanelAxes(image, lower, "detected points", true, s);
-  drawSteps(image, upper, scoreSteps, kScoreColor, s);
-  drawSteps(image, lower, detectedSteps, kDetectedColor, s);
+  detail::drawPanelAxes(image, upper, "score Q", false, s);
+  detail::drawPanelAxes(image, lower, "detected points", true, s);
+  detail::drawSteps(image, upper, scoreSteps, upper.x.hi, kScoreColor, s, true);
+  detail::drawSteps(image, lower, detectedSteps, lower.x.hi, kDetectedColor, s, true);
   drawEventMarks(image, upper, lower, eventMarks(tracks), s);
   // Frames again: the fills and curves must not hide them.
-  strokeRect(image, upper.left - 1, upper.top - 1, upper.right + 1, upper.bottom + 1, kFrame);
-  strokeRect(image, lower.left - 1, lower.top - 1, lower.right + 1, lower.bottom + 1, kFrame);
+  strokeRect(image, upper.left - 1, upper.top - 1, upper.right + 1, upper.bottom + 1,
+             detail::kPlotFrame);
+  strokeRect(image, lower.left - 1, lower.top - 1, lower.right + 1, lower.bottom + 1,
+             detail::kPlotFrame);
   drawText(image, (left + upper.right) / 2, lower.bottom + 6 * s + textHeight(s) + 4 * s,
-           "mission time (s)", kText, s, TextAlign::Center);
+           "mission time (s)", detail::kPlotText, s, TextAlign::Center);
   return image;
 }
 
