@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "coinspect/eval/run_plots.h"
+#include "pixel_count.h"
 
 namespace coinspect::eval {
 namespace {
@@ -12,22 +13,8 @@ namespace {
 constexpr Rgb kTotalLine{120, 120, 120};
 constexpr Rgb kText{35, 35, 35};
 
-// Pixels of `color` within `radius` pixels of (x, y).
-int countNear(const RgbImage& image, double x, double y, int radius, Rgb color) {
-  int count = 0;
-  for (int py = static_cast<int>(y) - radius; py <= static_cast<int>(y) + radius; ++py)
-    for (int px = static_cast<int>(x) - radius; px <= static_cast<int>(x) + radius; ++px)
-      if (image.inside(px, py) && image.at(px, py) == color) ++count;
-  return count;
-}
-
-int countIn(const RgbImage& image, int x0, int y0, int x1, int y1, Rgb color) {
-  int count = 0;
-  for (int y = y0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x)
-      if (image.inside(x, y) && image.at(x, y) == color) ++count;
-  return count;
-}
+using test::countIn;
+using test::countNear;
 
 FeatureCurve curve(const std::string& label, std::vector<double> times, double budget = 100.0) {
   return {label, "slei-a", std::move(times), 5, budget};

@@ -7,6 +7,7 @@
 #include "coinspect/record/observations.h"
 #include "coinspect/testing/paths.h"
 #include "picture_run.h"
+#include "pixel_count.h"
 
 namespace coinspect::eval {
 namespace {
@@ -25,22 +26,8 @@ class RunPlots : public ::testing::Test {
   world::Scenario scenario_ = test::pictureScenario();
 };
 
-// Pixels of `color` within `radius` pixels of (x, y).
-int countNear(const RgbImage& image, double x, double y, int radius, Rgb color) {
-  int count = 0;
-  for (int py = static_cast<int>(y) - radius; py <= static_cast<int>(y) + radius; ++py)
-    for (int px = static_cast<int>(x) - radius; px <= static_cast<int>(x) + radius; ++px)
-      if (image.inside(px, py) && image.at(px, py) == color) ++count;
-  return count;
-}
-
-int countIn(const RgbImage& image, int x0, int y0, int x1, int y1, Rgb color) {
-  int count = 0;
-  for (int y = y0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x)
-      if (image.at(x, y) == color) ++count;
-  return count;
-}
+using test::countIn;
+using test::countNear;
 
 TEST_F(RunPlots, ScorePlotDrawsScoreAboveAndDetectedBelow) {
   const RgbImage image = renderScorePlot(tracks_, "cube", 400, 300);
