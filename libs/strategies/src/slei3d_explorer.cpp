@@ -419,10 +419,10 @@ void Slei3dStrategy::planHandout(const agent::AgentView& view) {
   if (options_.variant == SleiVariant::Team) {
     // caric-team hands out at the hub, on its returns to the station (and once its boxes are
     // done): flying back for every feature found kept it from exploring.
-    auto planned = handToFreeSoonest(view, explorationFinished_ || box_ < 0);
+    // (Checked first: the hand-out's meeting point costs a reachability flood of the map.)
     const Vec3 hub = subgroupOf(static_cast<uint32_t>(unit_.self))->firstMeeting.place;
     const bool atHub = (view.odometry.position - hub).norm() <= kHubReach;
-    if (atHub || box_ < 0) startHandouts(std::move(planned));
+    if (atHub || box_ < 0) startHandouts(handToFreeSoonest(view, explorationFinished_ || box_ < 0));
     return;
   }
   // Inspectors missed twice in a row are left out for a while: the explorer does not know
