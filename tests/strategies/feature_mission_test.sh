@@ -3,7 +3,7 @@
 # discovered, handed out and collected at the ground station above floors, at least one
 # station-explorer meeting, and no collision or death.
 # Usage: feature_mission_test.sh <coinspect> <config> <strategy> <min discovered> <min assigned>
-#        <min collected> <scratch dir>
+#        <min collected> <scratch dir> [more options of coinspect run...]
 set -euo pipefail
 coinspect=$1
 config=$2
@@ -12,8 +12,9 @@ min_discovered=$4
 min_assigned=$5
 min_collected=$6
 out=$7
+shift 7
 rm -rf "$out"
-"$coinspect" run "$config" --set "strategy.name=$strategy" --quiet --out "$out" > "$out.log"
+"$coinspect" run "$config" --set "strategy.name=$strategy" "$@" --quiet --out "$out" > "$out.log"
 grep -E '^(features|meetings|punctuality|collisions) ' "$out.log"
 # The summary's lines: "features    150: discovered D, assigned A, inspected I, collected C ...",
 # "meetings    gcs-explorer G, ...", "collisions  N (deaths M)", "mission ... strategy S, ...".

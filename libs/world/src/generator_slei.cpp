@@ -1,6 +1,7 @@
 // SLEI3D-like scenarios (slei3d-reference.md): the paper's four scenes rebuilt from primitives
 // at their published extents, each with exactly 150 features (interest points) spread over the
-// boxes, and the paper's default fleet (1 ground GCS, 2 explorers, 4 inspectors).
+// boxes, and the paper's fleet of the scene: 1 ground GCS, 2 explorers and 4 inspectors (A, and
+// B, where the paper flies 1 + 3), 4 + 8 (C), 8 + 40 (D).
 #include <algorithm>
 #include <cmath>
 
@@ -178,16 +179,29 @@ void addEnclosure(SceneBuilder& scene, double hx, double hy, double height, bool
   }
 }
 
-std::vector<UnitSpec> sleiFleet(const Vec2& gate) {
+// The paper's fleet of a scene (its Table I and section VI): a ground station, `explorers` in a
+// row at the gate and `inspectors` in rows of up to 10 behind it, 3-4 m apart so that no two
+// start within each other's collision radius.
+struct SleiFleetSize {
+  int explorers = 2;
+  int inspectors = 4;
+};
+
+std::vector<UnitSpec> sleiFleet(const Vec2& gate, const SleiFleetSize& size) {
   // The GCS is a ground vehicle: it starts on the ground like the others.
   std::vector<UnitSpec> fleet{
       makeUnit("gcs", UnitRole::GroundStation, Vec3(gate.x(), gate.y() - 3.0, 0.1), 2.0)};
-  for (int i = 0; i < 2; ++i)
+  for (int i = 0; i < size.explorers; ++i)
     fleet.push_back(makeUnit("explorer" + std::to_string(i + 1), UnitRole::Explorer,
-                             Vec3(gate.x() - 2.0 + 4.0 * i, gate.y(), 0.1), 2.0));
-  for (int i = 0; i < 4; ++i)
-    fleet.push_back(makeUnit("inspector" + std::to_string(i + 1), UnitRole::Photographer,
-                             Vec3(gate.x() - 4.5 + 3.0 * i, gate.y() - 6.0, 0.1), 2.0));
+                             Vec3(gate.x() - 2.0 * (size.explorers - 1) + 4.0 * i, gate.y(), 0.1),
+                             2.0));
+  const int perRow = std::min(size.inspectors, 10);
+  for (int i = 0; i < size.inspectors; ++i) {
+    const int row = i / perRow, column = i % perRow;
+    fleet.push_back(makeUnit(
+        "inspector" + std::to_string(i + 1), UnitRole::Photographer,
+        Vec3(gate.x() - 1.5 * (perRow - 1) + 3.0 * column, gate.y() - 6.0 - 3.0 * row, 0.1), 2.0));
+  }
   return fleet;
 }
 
@@ -200,10 +214,11 @@ std::vector<InterestPoint> features(const SceneBuilder& scene,
 }
 
 Scenario finishSlei(const std::string& name, const std::string& description, SceneBuilder& scene,
-                    std::vector<OrientedBox> boxes, const Vec2& gate, double budget, Rng& rng) {
+                    std::vector<OrientedBox> boxes, const Vec2& gate, double budget, Rng& rng,
+                    const SleiFleetSize& fleetSize = {}) {
   auto points = features(scene, boxes, rng);
   return assembleScenario(name, description, scene, std::move(boxes), std::move(points),
-                          sleiFleet(gate), budget);
+                          sleiFleet(gate, fleetSize), budget);
 }
 
 }  // namespace
@@ -383,8 +398,8 @@ Scenario generateSleiC(uint64_t seed) {
     }
   return finishSlei("slei-c",
                     "SLEI3D scene C: 3 x 3 city blocks of varied buildings up to 30 m, "
-                    "70 x 60 x 30 m; 9 boxes, 150 features",
-                    scene, std::move(boxes), Vec2(0.0, -36.0), 3000.0, pointRng);
+                    "70 x 60 x 30 m; 9 boxes, 150 features; 4 explorers, 8 inspectors",
+                    scene, std::move(boxes), Vec2(0.0, -36.0), 3000.0, pointRng, {4, 8});
 }
 
 Scenario generateSleiD(uint64_t seed) {
@@ -453,8 +468,8 @@ Scenario generateSleiD(uint64_t seed) {
   return finishSlei("slei-d",
                     "SLEI3D scene D: large walled ancient site with a 20 m stepped pyramid, "
                     "temples, stupas and an obelisk avenue, 120 x 160 x 20 m; 15 boxes, 150 "
-                    "features",
-                    scene, std::move(boxes), Vec2(0.0, -86.0), 3600.0, pointRng);
+                    "features; 8 explorers, 40 inspectors",
+                    scene, std::move(boxes), Vec2(0.0, -86.0), 3600.0, pointRng, {8, 40});
 }
 
 }  // namespace coinspect::world::detail

@@ -217,10 +217,19 @@ TEST_P(EachGenerator, FleetStartsOnOpenGroundWithItsBudget) {
     std::map<UnitRole, int> count;
     for (const UnitSpec& unit : s.fleet)
       ++count[unit.role];
+    // The paper's fleets: 2 + 4 in A (and B), 4 + 8 in C, 8 + 40 in D.
+    const std::map<std::string, std::pair<int, int>> fleets{{"slei-c", {4, 8}},
+                                                            {"slei-d", {8, 40}}};
+    const auto fleet = fleets.count(name) ? fleets.at(name) : std::pair<int, int>(2, 4);
     EXPECT_EQ(count[UnitRole::GroundStation], 1);
-    EXPECT_EQ(count[UnitRole::Explorer], 2);
-    EXPECT_EQ(count[UnitRole::Photographer], 4);
+    EXPECT_EQ(count[UnitRole::Explorer], fleet.first);
+    EXPECT_EQ(count[UnitRole::Photographer], fleet.second);
   }
+  // No two units start within two collision radii of each other.
+  for (size_t i = 0; i < s.fleet.size(); ++i)
+    for (size_t j = i + 1; j < s.fleet.size(); ++j)
+      EXPECT_GT((s.fleet[i].startPosition - s.fleet[j].startPosition).norm(), 2.0)
+          << s.fleet[i].name << " " << s.fleet[j].name;
   if (spec.budget > 0.0) {
     EXPECT_EQ(s.missionBudget, spec.budget);
   }
