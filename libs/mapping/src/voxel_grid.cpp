@@ -66,26 +66,57 @@ Index3 VoxelGrid::cellOf(const Vec3& point) const {
 }
 
 void VoxelGrid::computeClearance(double cap, bool unknownBlocks) {
+  clearance_.assign(states_.size(), 0.0f);
+  clearanceCap_ = cap;
+  clearanceUnknownBlocks_ = unknownBlocks;
+  transformWindow(Index3::Zero(), size_ - Index3::Ones());
+}
+
+void VoxelGrid::updateClearance(const Index3& low, const Index3& high) {
+  COINSPECT_ASSERT(hasClearance());
+  if ((low.array() > high.array()).any()) return;  // nothing changed
+  // A cell's capped clearance depends only on the cells within the cap of it: the values that
+  // can change are those within the cap of the changed cells.
+  const Index3 reach = Index3::Constant(capCells());
+  transformWindow((low - reach).cwiseMax(0), (high + reach).cwiseMin(size_ - Index3::Ones()));
+}
+
+int VoxelGrid::capCells() const {
+  return static_cast<int>(std::ceil(clearanceCap_ / resolution_)) + 1;
+}
+
+void VoxelGrid::transformWindow(const Index3& low, const Index3& high) {
   constexpr float kInf = std::numeric_limits<float>::infinity();
-  const size_t n = states_.size();
-  std::vector<float> squared(n);
-  for (size_t i = 0; i < n; ++i) {
-    const bool blocks =
-        states_[i] == CellState::Occupied || (unknownBlocks && states_[i] == CellState::Unknown);
-    squared[i] = blocks ? 0.0f : kInf;
-  }
+  // The transform runs over the window grown by the cap (clipped to the grid): a blocking cell
+  // farther out cannot bring a cell of the window under the cap. Over the whole grid this is the
+  // whole grid, and a window's values equal the whole grid's: exact squared cell distances.
+  const Index3 reach = Index3::Constant(capCells());
+  const Index3 from = (low - reach).cwiseMax(0);
+  const Index3 to = (high + reach).cwiseMin(size_ - Index3::Ones());
+  const int sx = to.x() - from.x() + 1, sy = to.y() - from.y() + 1, sz = to.z() - from.z() + 1;
+  std::vector<float> squared(static_cast<size_t>(sx) * sy * sz);
+  size_t i = 0;
+  for (int z = from.z(); z <= to.z(); ++z)
+    for (int y = from.y(); y <= to.y(); ++y) {
+      const size_t row = linear(Index3(from.x(), y, z));
+      for (int x = 0; x < sx; ++x, ++i) {
+        const CellState state = states_[row + x];
+        const bool blocks = state == CellState::Occupied ||
+                            (clearanceUnknownBlocks_ && state == CellState::Unknown);
+        squared[i] = blocks ? 0.0f : kInf;
+      }
+    }
   // Separable transform: x lines, then y, then z (squared cell distances).
-  const int sx = size_.x(), sy = size_.y(), sz = size_.z();
   const int longest = std::max({sx, sy, sz});
   std::vector<float> line(longest), result(longest);
   std::vector<int> v;
-  std::vector<float> z;
+  std::vector<float> cuts;
   const auto pass = [&](int count, int stride, auto firstOf, int lines) {
     for (int l = 0; l < lines; ++l) {
       const size_t first = firstOf(l);
       for (int q = 0; q < count; ++q)
         line[q] = squared[first + static_cast<size_t>(q) * stride];
-      distanceTransform1d(line.data(), result.data(), count, v, z);
+      distanceTransform1d(line.data(), result.data(), count, v, cuts);
       for (int q = 0; q < count; ++q)
         squared[first + static_cast<size_t>(q) * stride] = result[q];
     }
@@ -96,10 +127,16 @@ void VoxelGrid::computeClearance(double cap, bool unknownBlocks) {
       sy, sx, [&](int l) { return static_cast<size_t>(l / sx) * sx * sy + l % sx; }, sx * sz);
   pass(
       sz, sx * sy, [&](int l) { return static_cast<size_t>(l); }, sx * sy);
-  clearance_.resize(n);
-  const float capF = static_cast<float>(cap);
-  for (size_t i = 0; i < n; ++i)
-    clearance_[i] = std::min(capF, std::sqrt(squared[i]) * static_cast<float>(resolution_));
+  const float capF = static_cast<float>(clearanceCap_);
+  const float res = static_cast<float>(resolution_);
+  for (int z = low.z(); z <= high.z(); ++z)
+    for (int y = low.y(); y <= high.y(); ++y) {
+      const size_t row = linear(Index3(low.x(), y, z));
+      const size_t local =
+          (static_cast<size_t>(z - from.z()) * sy + (y - from.y())) * sx + (low.x() - from.x());
+      for (int x = 0; x <= high.x() - low.x(); ++x)
+        clearance_[row + x] = std::min(capF, std::sqrt(squared[local + x]) * res);
+    }
 }
 
 }  // namespace coinspect::mapping

@@ -46,5 +46,46 @@ TEST(VoxelGrid, NothingBlockingGivesTheCap) {
   EXPECT_FLOAT_EQ(grid.clearance(Index3(1, 2, 3)), 3.0f);
 }
 
+// updateClearance after random edits inside a box equals a transform of the whole grid, value
+// for value (the planners' grids are updated this way; any difference would change missions).
+TEST(VoxelGrid, UpdatedClearanceEqualsTheWholeTransform) {
+  uint32_t seed = 12345;
+  const auto next = [&seed](int below) {
+    seed = seed * 1664525u + 1013904223u;
+    return static_cast<int>((seed >> 8) % static_cast<uint32_t>(below));
+  };
+  const Index3 size(40, 30, 20);
+  // Sparse blockers, so that many clearances lie near the cap, where a too small update
+  // window shows.
+  VoxelGrid updated(Vec3(-3.0, 2.0, 0.0), 0.5, size, CellState::Free);
+  for (int i = 0; i < 60; ++i)
+    updated.set(Index3(next(40), next(30), next(20)),
+                next(3) == 0 ? CellState::Unknown : CellState::Occupied);
+  updated.computeClearance(2.2, true);
+  for (int round = 0; round < 20; ++round) {
+    // A box of edits (some rounds at the grid's edge, one round none), as a scan or a merge.
+    const Index3 low(next(36), next(26), next(16));
+    const Index3 extent(1 + next(8), 1 + next(8), 1 + next(6));
+    const Index3 high = (low + extent).cwiseMin(size - Index3::Ones());
+    Index3 changedLow = size, changedHigh = Index3::Constant(-1);
+    for (int k = 0; round != 7 && k < 40; ++k) {
+      const Index3 cell(low.x() + next(high.x() - low.x() + 1),
+                        low.y() + next(high.y() - low.y() + 1),
+                        low.z() + next(high.z() - low.z() + 1));
+      updated.set(cell, next(4) == 0 ? CellState::Occupied : CellState::Free);
+      changedLow = changedLow.cwiseMin(cell);
+      changedHigh = changedHigh.cwiseMax(cell);
+    }
+    updated.updateClearance(changedLow, changedHigh);
+    VoxelGrid whole = updated;
+    whole.computeClearance(2.2, true);
+    for (int z = 0; z < size.z(); ++z)
+      for (int y = 0; y < size.y(); ++y)
+        for (int x = 0; x < size.x(); ++x)
+          ASSERT_EQ(updated.clearance(Index3(x, y, z)), whole.clearance(Index3(x, y, z)))
+              << "round " << round << " cell " << x << " " << y << " " << z;
+  }
+}
+
 }  // namespace
 }  // namespace coinspect::mapping

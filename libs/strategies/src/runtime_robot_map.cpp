@@ -69,17 +69,24 @@ RobotMap::RobotMap(const RobotMapOptions& options, const std::vector<BoxView>& b
     for (const auto& box : boxes)
       columns.push_back(
           extendToGround(box, std::max(groundZ, boxBounds(box).min.z() - options.columnDepth)));
-    for (int z = 0; z < size.z(); ++z)
-      for (int y = 0; y < size.y(); ++y)
-        for (int x = 0; x < size.x(); ++x) {
-          const mapping::Index3 cell(x, y, z);
-          const Vec3 c = grid_.centre(cell);
-          for (const auto& column : columns)
-            if (distanceToBox(column, c) <= options.boxMargin) {
-              blockUnknown_[grid_.linear(cell)] = 1;
-              break;
-            }
-        }
+    // Per column, only the cells of its bounds grown by the margin: a cell farther from the
+    // bounds is farther from the box (a scan of every cell against every box took most of the
+    // start-up of a 48-robot mission).
+    const Vec3 reach = Vec3::Constant(options.boxMargin + res);
+    for (const auto& column : columns) {
+      const Aabb bounds = boxBounds(column);
+      const mapping::Index3 low = grid_.cellOf(bounds.min - reach).cwiseMax(0);
+      const mapping::Index3 high =
+          grid_.cellOf(bounds.max + reach).cwiseMin(size - mapping::Index3::Ones());
+      for (int z = low.z(); z <= high.z(); ++z)
+        for (int y = low.y(); y <= high.y(); ++y)
+          for (int x = low.x(); x <= high.x(); ++x) {
+            const mapping::Index3 cell(x, y, z);
+            uint8_t& blocks = blockUnknown_[grid_.linear(cell)];
+            if (!blocks && distanceToBox(column, grid_.centre(cell)) <= options.boxMargin)
+              blocks = 1;
+          }
+    }
   }
   rebuild();
 }
@@ -179,8 +186,12 @@ void RobotMap::rebuild() {
                              grid_.resolution());
   COINSPECT_ASSERT(snapshot.size() == grid_.size());
   // Same linear layout in both grids (same origin, resolution and size): z, then y, then x.
+  // The clearance field is then brought up to date around the cells that changed only: a scan
+  // changes a few metres around the robot, and a transform of the whole grid every rebuild was
+  // most of a mission's computing.
   size_t i = 0;
   const mapping::Index3 size = grid_.size();
+  mapping::Index3 low = size, high = mapping::Index3::Constant(-1);
   for (int z = 0; z < size.z(); ++z)
     for (int y = 0; y < size.y(); ++y)
       for (int x = 0; x < size.x(); ++x, ++i) {
@@ -188,9 +199,15 @@ void RobotMap::rebuild() {
         mapping::CellState state = snapshot.state(cell);
         if (state == mapping::CellState::Unknown && !blockUnknown_[i])
           state = mapping::CellState::Free;
+        if (state == grid_.state(cell)) continue;
         grid_.set(cell, state);
+        low = low.cwiseMin(cell);
+        high = high.cwiseMax(cell);
       }
-  grid_.computeClearance(options_.clearanceCap, true);
+  if (grid_.hasClearance())
+    grid_.updateClearance(low, high);
+  else
+    grid_.computeClearance(options_.clearanceCap, true);
   ++gridVersion_;
 }
 

@@ -50,6 +50,10 @@ class VoxelGrid {
   // Occupied cells always block; unknown cells block when `unknownBlocks`; outside the grid
   // nothing blocks. Cost O(cells).
   void computeClearance(double cap, bool unknownBlocks);
+  // After set() changed cells inside [low, high] (inclusive; low > high: none), brings the
+  // clearance field up to date at the cost of that box grown by the cap, not of the grid. The
+  // values equal those of computeClearance() with the same arguments. Requires computeClearance().
+  void updateClearance(const Index3& low, const Index3& high);
   bool hasClearance() const { return !clearance_.empty(); }
   // Distance (m) to the nearest blocking cell centre; 0 on blocking cells, `cap` when none is
   // nearer. Cells outside the grid: 0. Requires computeClearance().
@@ -63,6 +67,12 @@ class VoxelGrid {
   Index3 size_ = Index3::Zero();
   std::vector<CellState> states_;
   std::vector<float> clearance_;
+  double clearanceCap_ = 0.0;  // the arguments of the last computeClearance()
+  bool clearanceUnknownBlocks_ = false;
+
+  int capCells() const;  // the cap in cells, rounded up, plus one
+  // Recomputes the clearance of the cells in [low, high] (inclusive).
+  void transformWindow(const Index3& low, const Index3& high);
 };
 
 }  // namespace coinspect::mapping
