@@ -1,4 +1,4 @@
-# Sourced by the end-to-end tests that write pictures (render, plot-features).
+# Sourced by the end-to-end tests that write pictures (render, plot-features, plot-timeline).
 # check_png FILE WIDTH HEIGHT: the PNG signature, then IHDR's width and height (big-endian).
 check_png() {
   local signature size

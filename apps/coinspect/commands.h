@@ -16,6 +16,7 @@ void addEvalCommand(CLI::App& root);
 void addRenderCommand(CLI::App& root);
 void addReplayCommand(CLI::App& root);
 void addPlotFeaturesCommand(CLI::App& root);
+void addPlotTimelineCommand(CLI::App& root);
 
 // Thrown after a command printed its results, to make main() return `status` (eval, render and
 // replay: 1 for a damaged rawlog; eval: 3 when the re-scored tally differs from the recorded one).

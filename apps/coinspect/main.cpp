@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   coinspect::app::addRenderCommand(app);
   coinspect::app::addReplayCommand(app);
   coinspect::app::addPlotFeaturesCommand(app);
+  coinspect::app::addPlotTimelineCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

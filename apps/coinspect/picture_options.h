@@ -1,4 +1,4 @@
-// Options shared by `coinspect render` and `coinspect replay`.
+// Options shared by the picture commands (render, replay, plot-features, plot-timeline).
 #pragma once
 
 #include <string>

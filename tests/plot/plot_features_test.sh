@@ -11,6 +11,8 @@ coinspect=$1
 out=$2
 part=$3
 source "$(dirname "$0")/../check_png.sh"
+picture_command=plot-features
+source "$(dirname "$0")/expect_bad.sh"
 rm -rf "$out"
 mkdir -p "$out/seed1" "$out/seed2"
 
@@ -38,21 +40,6 @@ EOF
 }
 feature_report "$out/seed1/report.json" slei3d 6 120 '[40.0, 12.5, 12.5]' '[10.0, 11.0, 30.0]'
 feature_report "$out/seed2/report.json" slei3d 6 100 '[70.25]' '[]'
-
-# expect_bad REGEX ARGS...: plot-features exits 2, stderr matches REGEX, no picture written.
-expect_bad() {
-  local regex=$1 status
-  shift
-  rm -f "$out/bad.png"
-  set +e
-  "$coinspect" plot-features --out "$out/bad.png" "$@" > /dev/null 2> "$out/bad.err"
-  status=$?
-  set -e
-  cat "$out/bad.err"
-  [[ $status -eq 2 ]] || { echo "plot-features $*: exit status $status, expected 2"; exit 1; }
-  grep -Eq -- "$regex" "$out/bad.err" || { echo "plot-features $*: no match for: $regex"; exit 1; }
-  [[ ! -e $out/bad.png ]] || { echo "plot-features $*: wrote a picture"; exit 1; }
-}
 
 case $part in
   pictures)

@@ -158,13 +158,8 @@ RgbImage renderFeaturePlot(const std::string& stage, const std::vector<FeatureCu
   frame.top = panel.top;
   frame.right = panel.right;
   frame.bottom = panel.bottom;
-  if (!legend.empty()) {
-    frame.legendLeft = panel.right + pad;
-    frame.legendTop = panel.top;
-    frame.legendRight = frame.legendLeft + detail::legendWidth(legend, s);
-    frame.legendBottom = frame.legendTop + detail::legendHeight(legend, s);
-    detail::drawLegend(image, frame.legendLeft, frame.legendTop, legend, s);
-  }
+  if (!legend.empty())
+    detail::drawLegendInFrame(image, panel.right + pad, panel.top, legend, s, frame);
   if (frameOut) *frameOut = frame;
   return image;
 }

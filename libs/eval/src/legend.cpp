@@ -69,6 +69,9 @@ void drawLegend(RgbImage& image, int left, int top, const std::vector<LegendEntr
       case LegendEntry::Kind::Unscored:
         image.fillDisc(cx, cy, 2.5 * scale, entry.color);
         break;
+      case LegendEntry::Kind::Swatch:
+        fillRect(image, x0, cy - 4 * scale, x0 + swatch, cy + 4 * scale, entry.color);
+        break;
     }
     drawText(image, x0 + swatch + 5 * scale, y, entry.label, kText, scale);
     y += rowHeight(scale);

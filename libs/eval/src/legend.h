@@ -12,7 +12,7 @@
 namespace coinspect::eval::detail {
 
 struct LegendEntry {
-  enum class Kind { Line, Marker, Box, ScoreBar, Unscored } kind;
+  enum class Kind { Line, Marker, Box, ScoreBar, Unscored, Swatch } kind;  // Swatch: filled
   std::string label;
   Rgb color;
   Marker marker = Marker::Disc;
@@ -28,5 +28,17 @@ int legendHeight(const std::vector<LegendEntry>& entries, int scale);
 // A white box with a frame, one entry per row: a swatch, then the label.
 void drawLegend(RgbImage& image, int left, int top, const std::vector<LegendEntry>& entries,
                 int scale);
+
+// drawLegend with the top-left corner at (left, top), its box recorded in the frame's legendLeft,
+// legendTop, legendRight and legendBottom (the pictures' frames, which tests locate content with).
+template <class Frame>
+void drawLegendInFrame(RgbImage& image, int left, int top, const std::vector<LegendEntry>& entries,
+                       int scale, Frame& frame) {
+  frame.legendLeft = left;
+  frame.legendTop = top;
+  frame.legendRight = left + legendWidth(entries, scale);
+  frame.legendBottom = top + legendHeight(entries, scale);
+  drawLegend(image, left, top, entries, scale);
+}
 
 }  // namespace coinspect::eval::detail

@@ -1,6 +1,6 @@
 // Hand-written rawlogs for the evaluator's unit tests: a wall with interest points, a ground
 // station and two photographers, and a writer that records captures (scored as the mission
-// scores them), links, deaths, tally updates and the end at chosen physics ticks.
+// scores them), links, events (deaths, ...), tally updates and the end at chosen physics ticks.
 #pragma once
 
 #include <filesystem>
@@ -75,6 +75,10 @@ class SyntheticRun {
   }
   void link(long long tick, const std::string& a, const std::string& b, bool linked) {
     writer_.writeLinkChanges(at(tick), {{a, b, linked}});
+  }
+  void event(long long tick, record::MissionEventKind kind, const std::string& unit,
+             const std::string& detail) {
+    writer_.writeEvent(at(tick), kind, unit, detail);
   }
   void death(long long tick, const std::string& unit) {
     writer_.writeEvent(at(tick), record::MissionEventKind::Death, unit, "test");

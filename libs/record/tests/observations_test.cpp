@@ -142,7 +142,8 @@ TEST(Observations, EventKindsKeepTheirNumbersAndRoundTrip) {
       {MissionEventKind::FeatureDetected, "feature-detected"},
       {MissionEventKind::FeatureInspected, "feature-inspected"},
       {MissionEventKind::FeatureCollected, "feature-collected"},
-      {MissionEventKind::Meeting, "meeting"}};
+      {MissionEventKind::Meeting, "meeting"},
+      {MissionEventKind::ActivityChanged, "activity-changed"}};
   for (size_t number = 0; number < kinds.size(); ++number) {
     const auto [kind, name] = kinds[number];
     EXPECT_EQ(static_cast<size_t>(kind), number) << name;

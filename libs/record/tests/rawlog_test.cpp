@@ -133,6 +133,36 @@ TEST(Rawlog, SampleReadsBackInOrderWithEveryField) {
   EXPECT_EQ(tally->totalScore, 0.5);
 }
 
+// Feature missions record each unit's activity as events: through the writer and the reader
+// they keep their kind, their unit (and its "<unit>.event" label), their activity and time.
+TEST(Rawlog, ActivityChangesRoundTripAsUnitEvents) {
+  const auto dir = testing::scratchDir("rawlog_activity");
+  {
+    RawlogWriter writer(dir / "run.rawlog", sample::sampleHeader(), 1.0);
+    writer.writeEvent(2.5, MissionEventKind::ActivityChanged, "jurong", "exploring");
+    writer.writeEvent(7.25, MissionEventKind::ActivityChanged, "jurong", "travelling-to-meeting");
+    writer.writeEvent(7.25, MissionEventKind::Meeting, "gcs", "jurong");
+    writer.close();
+  }
+  const auto result = readAll(dir / "run.rawlog");
+  EXPECT_TRUE(result.status.clean) << result.status.message;
+  ASSERT_EQ(result.objects.size(), 3u);
+  const std::vector<std::pair<double, std::string>> expected = {{2.5, "exploring"},
+                                                                {7.25, "travelling-to-meeting"}};
+  for (size_t i = 0; i < expected.size(); ++i) {
+    const auto event = as<CObservationCoinspectEvent>(result.objects[i]);
+    ASSERT_TRUE(event);
+    EXPECT_EQ(event->kind, MissionEventKind::ActivityChanged);
+    EXPECT_EQ(event->sensorLabel, "jurong.event");
+    EXPECT_EQ(event->unit, "jurong");
+    EXPECT_EQ(event->detail, expected[i].second);
+    EXPECT_EQ(mrpt::Clock::toDouble(event->timestamp), expected[i].first);
+  }
+  const auto meeting = as<CObservationCoinspectEvent>(result.objects[2]);
+  ASSERT_TRUE(meeting);
+  EXPECT_EQ(meeting->kind, MissionEventKind::Meeting);
+}
+
 TEST(Rawlog, SameInputsGiveIdenticalBytes) {
   const auto dir = testing::scratchDir("rawlog_determinism");
   sample::writeSampleRun(dir / "a.rawlog");

@@ -273,6 +273,8 @@ const char* toString(MissionEventKind kind) {
       return "feature-collected";
     case MissionEventKind::Meeting:
       return "meeting";
+    case MissionEventKind::ActivityChanged:
+      return "activity-changed";
   }
   return "unknown";
 }

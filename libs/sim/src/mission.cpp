@@ -306,8 +306,8 @@ void Mission::Impl::monitor() {
           state.velocity.norm() > config.startSpeed) {
         started = true;
         startTime = now();
-        if (features) features->start(startTime);
         event("mission-start", unit.spec->name, "take-off");
+        if (features) features->start(startTime);  // after the start: its activity events
         break;
       }
     }

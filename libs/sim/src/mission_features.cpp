@@ -56,6 +56,9 @@ void FeatureTracker::start(double time) {
   for (size_t i = 0; i < names_.size(); ++i) {
     counting_[i] = 1;
     activitySince_[i] = time;
+    // Changes before the clock starts are not events: the timeline (coinspect plot-timeline)
+    // begins with what each unit reports when the clock starts.
+    sink_("activity-changed", names_[i], agent::toString(activity_[i]));
   }
 }
 
@@ -156,6 +159,7 @@ size_t FeatureTracker::command(size_t unit, double time, const agent::AgentComma
   if (command.activity && *command.activity != activity_[unit]) {
     addActivityTime(unit, time);
     activity_[unit] = *command.activity;
+    if (counting_[unit]) sink_("activity-changed", names_[unit], agent::toString(activity_[unit]));
   }
   if (command.stationMeetingTime && std::isfinite(*command.stationMeetingTime) &&
       roles_[unit] == agent::Role::Explorer &&

@@ -42,6 +42,7 @@ record::MissionEventKind eventKind(const std::string& kind) {
   if (kind == "feature-inspected") return K::FeatureInspected;
   if (kind == "feature-collected") return K::FeatureCollected;
   if (kind == "meeting") return K::Meeting;
+  if (kind == "activity-changed") return K::ActivityChanged;
   COINSPECT_ASSERT(!"a mission event kind without a rawlog kind");
   return K::Failure;
 }

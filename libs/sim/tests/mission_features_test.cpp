@@ -165,6 +165,39 @@ TEST(FeatureMission, DetectedInspectedCarriedAndCollectedThenTheMissionEnds) {
               *f.finishTime - (12.0 - summary.startTime), 0.15);
 }
 
+// The timeline of activities (coinspect plot-timeline): every unit's activity when the mission
+// clock starts (the station never reports one), then each change, as "activity-changed" events.
+TEST(FeatureMission, ActivityChangesAreEventsFromTheStartOfTheMissionClock) {
+  Seen seen;
+  const auto registry = scripted(12.0, seen);
+  Mission mission(featureScene(), Config::fromText(kFeatureMission, "features.ini"), registry);
+  mission.run();
+  const double start = mission.summary().startTime;
+  std::vector<MissionEvent> activities;
+  bool startSeen = false;
+  for (const auto& e : mission.events()) {
+    startSeen = startSeen || e.kind == "mission-start";
+    if (e.kind != "activity-changed") continue;
+    EXPECT_TRUE(startSeen) << "an activity event before the mission-start event";
+    activities.push_back(e);
+  }
+  ASSERT_EQ(activities.size(), 4u);
+  const std::vector<std::pair<std::string, std::string>> expected = {
+      {"gcs", "unreported"},
+      {"e", "exploring"},
+      {"i", "inspecting"},
+      {"i", "travelling-to-meeting"}};
+  for (size_t k = 0; k < expected.size(); ++k) {
+    EXPECT_EQ(activities[k].unit, expected[k].first) << k;
+    EXPECT_EQ(activities[k].detail, expected[k].second) << k;
+  }
+  for (size_t k = 0; k < 3; ++k)
+    EXPECT_DOUBLE_EQ(activities[k].time, start);
+  // The inspector's first decision at or after 12 s of simulated time.
+  EXPECT_GE(activities[3].time, 12.0);
+  EXPECT_LT(activities[3].time, 12.5);
+}
+
 TEST(FeatureMission, WithoutAMeetingNothingIsCollectedAndTheBudgetEndsIt) {
   Seen seen;
   const auto registry = scripted(1e9, seen);  // the inspector never comes back

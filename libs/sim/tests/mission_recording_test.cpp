@@ -207,7 +207,8 @@ TEST_F(RecordedQuickMission, EventsMatchTheMissionsEventsInOrder) {
       {"death", record::MissionEventKind::Death},
       {"no-takeoff", record::MissionEventKind::NoTakeoff},
       {"blackout-start", record::MissionEventKind::BlackoutStart},
-      {"blackout-end", record::MissionEventKind::BlackoutEnd}};
+      {"blackout-end", record::MissionEventKind::BlackoutEnd},
+      {"activity-changed", record::MissionEventKind::ActivityChanged}};
   const auto events = ofClass<record::CObservationCoinspectEvent>(recorded_->objects);
   const auto& expected = run_->events;
   ASSERT_EQ(events.size(), expected.size());

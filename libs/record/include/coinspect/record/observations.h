@@ -163,9 +163,12 @@ enum class MissionEventKind : uint8_t {
   FeatureInspected = 10,  // an inspector completed a feature's inspection
   FeatureCollected = 11,  // the ground station received a feature's inspection result
   Meeting = 12,           // two units linked again after a gap (unit: the lower fleet index)
+  // A unit's reported activity (agent::toString(Activity), e.g. "exploring") from now on: each
+  // unit's activity at the start of the mission clock, then every change while it is alive.
+  ActivityChanged = 13,
 };
 // The last kind this build knows (readers reject larger values).
-inline constexpr MissionEventKind kLastMissionEventKind = MissionEventKind::Meeting;
+inline constexpr MissionEventKind kLastMissionEventKind = MissionEventKind::ActivityChanged;
 const char* toString(MissionEventKind kind);
 
 // A mission event: start, end, no take-off, a unit's collision, failure or death, blackouts.
