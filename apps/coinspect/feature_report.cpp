@@ -75,7 +75,7 @@ std::string folderName(const std::filesystem::path& folder) {
 
 const std::vector<std::string>& featureStages() {
   static const std::vector<std::string> kStages = {"discovered", "assigned", "inspected",
-                                                   "collected"};
+                                                   "collected", "priority"};
   return kStages;
 }
 
@@ -115,9 +115,11 @@ FeatureRunReport readFeatureRunReport(const std::filesystem::path& run, const st
   }
   std::sort(report.times.begin(), report.times.end());
 
-  const json& total = reader.require(root, "features.total", "");
+  // The high-priority features' curve counts up to their own total.
+  const std::string totalKey = stage == "priority" ? "features.priority.total" : "features.total";
+  const json& total = reader.require(root, totalKey, "");
   if (!total.is_number_unsigned())
-    reader.fail("features.total", total.dump() + " is not a count of features (an integer >= 0)");
+    reader.fail(totalKey, total.dump() + " is not a count of features (an integer >= 0)");
   report.total = total.get<uint64_t>();
   const json& budget = reader.require(root, "clock.budget", "");
   if (!budget.is_number() || !std::isfinite(budget.get<double>()) || !(budget.get<double>() > 0.0))

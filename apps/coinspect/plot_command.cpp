@@ -47,7 +47,7 @@ void requireStage(const std::string& stage) {
   if (std::find(stages.begin(), stages.end(), stage) == stages.end())
     throw InputError(
         "--stage", "",
-        "'" + stage + "' is not a stage: discovered, assigned, inspected or collected");
+        "'" + stage + "' is not a stage: discovered, assigned, inspected, collected or priority");
 }
 
 // The given labels; for the others the strategy, and when another run without a label has the
@@ -114,7 +114,10 @@ void addPlotFeaturesCommand(CLI::App& root) {
   plot->add_option("--out", options->out, "the PNG to write")->required();
   plot->add_option("--size", options->size, "picture size, WIDTHxHEIGHT in pixels")
       ->capture_default_str();
-  plot->add_option("--stage", options->stage, "discovered, assigned, inspected or collected")
+  plot->add_option(
+          "--stage", options->stage,
+          "discovered, assigned, inspected, collected or priority (the high-priority features "
+          "collected)")
       ->capture_default_str();
   plot->add_option("RUN[=LABEL]", options->runs,
                    "run folder written by coinspect run --out (or its report.json), and the "
@@ -122,7 +125,8 @@ void addPlotFeaturesCommand(CLI::App& root) {
                    "share it)")
       ->required();
   plot->footer(
-      "Reads features.timeline.<stage>, features.total and clock.budget from each report.json "
+      "Reads features.timeline.<stage>, features.total (features.priority.total for priority) "
+      "and clock.budget from each report.json "
       "and prints the PNG's path. Exit status: 0, 2 for bad input (a missing or malformed "
       "report, a run without features, a bad option).");
   plot->callback([options] { plotFeatures(*options); });

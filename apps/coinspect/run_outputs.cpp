@@ -46,6 +46,13 @@ record::RunReportFeatures makeFeatures(const sim::MissionSummary& s) {
                 {"assigned", happened(f.assignedAt)},
                 {"inspected", happened(f.inspectedAt)},
                 {"collected", happened(f.collectedAt)}};
+  std::vector<double> priorityCollectedAt;
+  for (size_t i = 0; i < f.collectedAt.size() && i < f.highPriority.size(); ++i)
+    if (f.highPriority[i]) priorityCollectedAt.push_back(f.collectedAt[i]);
+  r.timeline["priority"] = happened(priorityCollectedAt);
+  r.priorityTotal = f.priorityTotal;
+  r.priorityCollected = f.priorityCollected;
+  r.priorityFinishTime = f.priorityFinishTime;
   for (size_t i = 0; i < f.units.size(); ++i) {
     const auto& u = f.units[i];
     record::RunReportFeatureUnit unit;

@@ -1,7 +1,7 @@
 #!/bin/bash
 # End-to-end: `coinspect plot-features` on hand-made feature-mission reports. PART pictures: two
 # runs (a run folder and a report.json path, with and without a label) make one PNG of the
-# requested size, the same bytes twice, another picture for another --stage. PART missing,
+# requested size, the same bytes twice, another picture for another --stage (also priority). PART missing,
 # values, options: bad input exits 2 naming the file and the key (or the option) and writes no
 # picture. The parts are separate tests because each coinspect start costs a few tenths of a
 # second.
@@ -28,11 +28,13 @@ feature_report() {
   "features": {
     "total": $3,
     "collected": 3,
+    "priority": {"total": 2, "collected": 1, "finish_time": null},
     "timeline": {
       "discovered": [1.5, 2.0, 4.0, 9.0],
       "assigned": [3.0, 5.0, 9.5],
       "inspected": $6,
-      "collected": $5
+      "collected": $5,
+      "priority": [12.5]
     }
   }
 }
@@ -62,6 +64,13 @@ case $part in
     if cmp -s "$out/collected.png" "$out/inspected.png"; then
       echo "--stage inspected drew the collected picture"; exit 1
     fi
+    # The high-priority features collected, counted up to their own total (2).
+    "$coinspect" plot-features --out "$out/priority.png" --stage priority "$out/seed1=first seed" \
+      "$out/seed2" > /dev/null
+    check_png "$out/priority.png" 1200 800
+    if cmp -s "$out/collected.png" "$out/priority.png"; then
+      echo "--stage priority drew the collected picture"; exit 1
+    fi
     ;;
   missing)
     echo 'this is not json' > "$out/notes.txt"
@@ -88,6 +97,10 @@ case $part in
     expect_bad "$out/nan/report.json: features.timeline.collected\[0\]: null is not a time" \
       "$out/nan"
     expect_bad "$out/no-total/report.json: features.total: missing" "$out/no-total"
+    sed 's/"priority": {"total": 2,/"priority": {/' "$out/seed1/report.json" \
+      > "$out/no-total/report.json"
+    expect_bad "$out/no-total/report.json: features.priority.total: missing" --stage priority \
+      "$out/no-total"
     expect_bad "$out/no-budget/report.json: clock.budget: missing" "$out/no-budget"
     ;;
   options)

@@ -87,8 +87,17 @@ double FeaturePlotFrame::y(double count) const {
   return panelOf(*this).py(count);
 }
 
+namespace {
+
+// "priority" is the collection of the high-priority features ([features] priority_boxes).
+std::string stageLabel(const std::string& stage) {
+  return stage == "priority" ? "collected (high priority)" : stage;
+}
+
+}  // namespace
+
 std::string featurePlotTitle(const std::string& stage, const std::vector<FeatureCurve>& curves) {
-  std::string title = "features " + stage + " over time (";
+  std::string title = "features " + stageLabel(stage) + " over time (";
   if (curves.empty()) return title + "no runs)";
   for (const auto& scenario :
        distinct<std::string>(curves, [](const FeatureCurve& c) { return c.scenario; }))
@@ -137,7 +146,7 @@ RgbImage renderFeaturePlot(const std::string& stage, const std::vector<FeatureCu
   panel.x =
       detail::niceAxis(0.0, endTime, std::max(2, (panel.right - panel.left) / (70 * s)), false);
 
-  detail::drawPanelAxes(image, panel, "features " + stage, true, s);
+  detail::drawPanelAxes(image, panel, "features " + stageLabel(stage), true, s);
   drawTotalLines(image, panel, curves, s);
   // No fill under the curves: it would hide the curves drawn before.
   for (size_t i = 0; i < curves.size(); ++i)

@@ -73,12 +73,14 @@ FeatureAllocation allocateFeatures(const std::vector<InspectorPlan>& inspectors,
 
   std::vector<bool> taken(features.size(), false);
   size_t left = features.size();
+  size_t urgentLeft = static_cast<size_t>(std::count_if(
+      features.begin(), features.end(), [](const auto& f) { return f.highPriority; }));
   for (size_t turn = 0; left > 0; turn = (turn + 1) % met.size()) {
     InspectorAssignment& agent = allocation.agents[turn];
     size_t nearest = features.size();
     double nearestDistance = std::numeric_limits<double>::infinity();
     for (size_t f = 0; f < features.size(); ++f) {
-      if (taken[f]) continue;
+      if (taken[f] || (urgentLeft > 0 && !features[f].highPriority)) continue;
       const double distance = (features[f].inspectFrom - at[turn]).norm();
       if (distance < nearestDistance) {
         nearestDistance = distance;
@@ -92,6 +94,7 @@ FeatureAllocation allocateFeatures(const std::vector<InspectorPlan>& inspectors,
     at[turn] = features[nearest].inspectFrom;
     taken[nearest] = true;
     --left;
+    if (features[nearest].highPriority) --urgentLeft;
   }
 
   allocation.rightAxis = allocation.agents.front().finishTime;

@@ -435,20 +435,28 @@ TEST(MeetingRoute, TheOrderChangesWhereAndAtWhatCost) {
 // ---------------------------------------------------------------------------------------------
 // MVRP
 
-TEST(MeetingAllocation, RoundRobinNearestNeighbourOnAHandMadeInstance) {
-  // Travel times at 2 m/s, 1 m/s^2: 1 m -> 2 s, 5 m -> 4.5 s, 10 m -> 7 s.
-  const std::vector<InspectorPlan> inspectors = {
-      plan(1, {window(Vec3(0, 0, 0), 0.0)}), plan(2, {window(Vec3(10, 0, 0), 20.0)}),
-      plan(3, {window(Vec3(50, 0, 0), 5.0)}),  // not met
-  };
+// Features at x = 4, 8, 9, -1, 14 (ids 100..104), inspected from y = 0; those at `urgent` x are
+// high priority.
+std::vector<PendingFeature> featuresOnALine(const std::vector<double>& urgent) {
   std::vector<PendingFeature> features;
   for (const double x : {4.0, 8.0, 9.0, -1.0, 14.0}) {
     PendingFeature feature;
     feature.id = 100 + static_cast<int64_t>(features.size());
     feature.position = Vec3(x, 1.0, 0.0);
     feature.inspectFrom = Vec3(x, 0.0, 0.0);
+    feature.highPriority = std::find(urgent.begin(), urgent.end(), x) != urgent.end();
     features.push_back(feature);
   }
+  return features;
+}
+
+TEST(MeetingAllocation, RoundRobinNearestNeighbourOnAHandMadeInstance) {
+  // Travel times at 2 m/s, 1 m/s^2: 1 m -> 2 s, 5 m -> 4.5 s, 10 m -> 7 s.
+  const std::vector<InspectorPlan> inspectors = {
+      plan(1, {window(Vec3(0, 0, 0), 0.0)}), plan(2, {window(Vec3(10, 0, 0), 20.0)}),
+      plan(3, {window(Vec3(50, 0, 0), 5.0)}),  // not met
+  };
+  const std::vector<PendingFeature> features = featuresOnALine({});
   const FeatureAllocation allocation =
       allocateFeatures(inspectors, {0, 1}, {12.0, 15.0}, features, 10.0, AllocationModel{});
   ASSERT_EQ(allocation.agents.size(), 2u);
@@ -474,6 +482,20 @@ TEST(MeetingAllocation, RoundRobinNearestNeighbourOnAHandMadeInstance) {
                     allocateFeatures(inspectors, {0, 0}, {1.0, 2.0}, features, 0.0, {});
                   }),
                   "repeated");
+}
+
+// Same instance with the farthest features (8 and 14) marked high priority: they are taken
+// first, whatever is nearer, then the rest by nearest neighbour.
+TEST(MeetingAllocation, HighPriorityFeaturesAreTakenFirst) {
+  const std::vector<InspectorPlan> inspectors = {plan(1, {window(Vec3(0, 0, 0), 0.0)}),
+                                                 plan(2, {window(Vec3(10, 0, 0), 20.0)})};
+  const std::vector<PendingFeature> features = featuresOnALine({8.0, 14.0});
+  const FeatureAllocation allocation =
+      allocateFeatures(inspectors, {0, 1}, {12.0, 15.0}, features, 10.0, AllocationModel{});
+  // Turns: 0 takes 8 (urgent, nearest of 8 and 14), 1 takes 14 (the last urgent one); then
+  // 0 takes 9 (from 8), 1 takes 4 (from 14, nearer than -1), 0 takes -1.
+  EXPECT_EQ(allocation.agents[0].features, (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(allocation.agents[1].features, (std::vector<int>{4, 0}));
 }
 
 // ---------------------------------------------------------------------------------------------

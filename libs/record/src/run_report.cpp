@@ -41,6 +41,11 @@ nlohmann::json featuresJson(const RunReportFeatures& f) {
           {"meetings", f.meetings},
           {"punctuality", f.punctuality},
           {"timeline", f.timeline},
+          {"priority",
+           {{"total", f.priorityTotal},
+            {"collected", f.priorityCollected},
+            {"finish_time", f.priorityFinishTime ? nlohmann::json(*f.priorityFinishTime)
+                                                 : nlohmann::json(nullptr)}}},
           {"units", units}};
 }
 

@@ -79,8 +79,10 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
   caster = std::make_unique<world::RayCaster>(scenario.meshes, scenario.groundZ);
   linkModel =
       comms::makeLinkModel(config.links, config.linkRange, config.source + ": [mission] links");
+  const auto& urgent = config.features.priorityBoxes;
   for (const auto& box : scenario.boxes)
-    boxes.push_back({box.center, box.size, box.rotation});
+    boxes.push_back({box.center, box.size, box.rotation,
+                     std::find(urgent.begin(), urgent.end(), box.name) != urgent.end()});
 
   const auto airframes = vehicle::loadAirframes(config.airframes);
   const auto& explorerFrame =
@@ -161,7 +163,9 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
       roles.push_back(unit.role);
     }
     features = std::make_unique<FeatureTracker>(
-        config.features, scenario.interestPoints, std::move(names), std::move(roles), station,
+        config.features, scenario.interestPoints,
+        highPriorityFeatures(config.features.priorityBoxes, scenario, config.source),
+        std::move(names), std::move(roles), station,
         [this](const std::string& kind, const std::string& unit, const std::string& detail) {
           event(kind, unit, detail);
         });

@@ -1,6 +1,7 @@
 #include "coinspect/sim/mission_config.h"
 
 #include <cmath>
+#include <sstream>
 
 #include "coinspect/core/error.h"
 #include "coinspect/core/text.h"
@@ -74,6 +75,11 @@ FeatureConfig readFeatures(const Config& config) {
   if (!(out.punctualityTolerance >= 0.0) || !std::isfinite(out.punctualityTolerance))
     throw InputError(config.source(), "[features] punctuality_tolerance",
                      "must be a finite time >= 0 s");
+  // Box names, separated by spaces; checked against the scenario's boxes when the mission is
+  // built (mission.cpp).
+  std::istringstream names(config.getString(f, "priority_boxes", ""));
+  for (std::string name; names >> name;)
+    out.priorityBoxes.push_back(name);
   return out;
 }
 

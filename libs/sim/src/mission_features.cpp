@@ -1,7 +1,10 @@
 #include "mission_features.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "coinspect/core/error.h"
 
 namespace coinspect::sim {
 
@@ -19,11 +22,36 @@ bool isInspector(agent::Role role) {
 
 }  // namespace
 
+std::vector<uint8_t> highPriorityFeatures(const std::vector<std::string>& boxes,
+                                          const world::Scenario& scenario,
+                                          const std::string& source) {
+  if (boxes.empty()) return {};
+  const std::string key = "[features] priority_boxes";
+  std::vector<uint8_t> high(scenario.interestPoints.size(), 0);
+  for (const std::string& name : boxes) {
+    const auto box = std::find_if(scenario.boxes.begin(), scenario.boxes.end(),
+                                  [&](const world::OrientedBox& b) { return b.name == name; });
+    if (box == scenario.boxes.end()) {
+      std::string known;
+      for (const auto& b : scenario.boxes)
+        known += (known.empty() ? "" : ", ") + b.name;
+      throw InputError(source, key, "no box '" + name + "' in the scenario (boxes: " + known + ")");
+    }
+    size_t inside = 0;
+    for (size_t f = 0; f < high.size(); ++f)
+      if (box->contains(scenario.interestPoints[f].position)) high[f] = 1, ++inside;
+    if (inside == 0) throw InputError(source, key, "box '" + name + "' holds no feature");
+  }
+  return high;
+}
+
 FeatureTracker::FeatureTracker(const FeatureConfig& config, const world::InterestPointSet& features,
-                               std::vector<std::string> names, std::vector<agent::Role> roles,
-                               std::optional<size_t> station, EventSink sink)
+                               std::vector<uint8_t> highPriority, std::vector<std::string> names,
+                               std::vector<agent::Role> roles, std::optional<size_t> station,
+                               EventSink sink)
     : config_(config),
       features_(features),
+      highPriority_(std::move(highPriority)),
       names_(std::move(names)),
       roles_(std::move(roles)),
       station_(station),
@@ -76,7 +104,8 @@ void FeatureTracker::detect(size_t unit, double time, const vehicle::VehicleStat
     if (known[f]) continue;
     known[f] = 1;
     ++detectedCount_[unit];
-    pendingDetections_[unit].push_back({f, features_[f].position, features_[f].normal, time});
+    pendingDetections_[unit].push_back(
+        {f, features_[f].position, features_[f].normal, time, isHighPriority(f)});
     if (std::isnan(discoveredAt_[f])) {
       discoveredAt_[f] = time;
       sink_("feature-detected", names_[unit], featureDetail(f));
@@ -218,6 +247,18 @@ FeatureSummary FeatureTracker::summary(double now, double startTime) const {
   out.assignedAt = onClock(assignedAt_, out.assigned);
   out.inspectedAt = onClock(inspectedAt_, out.inspected);
   out.collectedAt = onClock(collectedAt_, out.collected);
+  out.highPriority.assign(features_.size(), 0);
+  double lastPriority = 0.0;
+  for (size_t f = 0; f < features_.size(); ++f) {
+    if (!isHighPriority(f)) continue;
+    out.highPriority[f] = 1;
+    ++out.priorityTotal;
+    if (std::isnan(out.collectedAt[f])) continue;
+    ++out.priorityCollected;
+    lastPriority = std::max(lastPriority, out.collectedAt[f]);
+  }
+  if (out.priorityTotal > 0 && out.priorityCollected == out.priorityTotal)
+    out.priorityFinishTime = lastPriority;
   if (finishedAt_) out.finishTime = std::max(0.0, *finishedAt_ - startTime);
   out.meetingsGcsExplorer = meetingsGcsExplorer_;
   out.meetingsExplorerInspector = meetingsExplorerInspector_;

@@ -16,17 +16,26 @@
 #include "coinspect/sim/mission_config.h"
 #include "coinspect/sim/mission_summary.h"
 #include "coinspect/vehicle/vehicle_state.h"
+#include "coinspect/world/scenario.h"
 
 namespace coinspect::sim {
+
+// Per feature of the scenario, 1 when it lies in one of the boxes named by [features]
+// priority_boxes (empty when none is named). Throws InputError naming the key for a name that is
+// not a box of the scenario, or a box that holds no feature.
+std::vector<uint8_t> highPriorityFeatures(const std::vector<std::string>& boxes,
+                                          const world::Scenario& scenario,
+                                          const std::string& source);
 
 class FeatureTracker {
  public:
   // kind, unit, detail (a mission event).
   using EventSink = std::function<void(const std::string&, const std::string&, const std::string&)>;
 
+  // highPriority: per feature, 1 when its detection reports it urgent (empty: none is).
   FeatureTracker(const FeatureConfig& config, const world::InterestPointSet& features,
-                 std::vector<std::string> names, std::vector<agent::Role> roles,
-                 std::optional<size_t> station, EventSink sink);
+                 std::vector<uint8_t> highPriority, std::vector<std::string> names,
+                 std::vector<agent::Role> roles, std::optional<size_t> station, EventSink sink);
 
   // The mission clock starts: activity time counts from here.
   void start(double time);
@@ -65,6 +74,10 @@ class FeatureTracker {
 
   FeatureConfig config_;
   const world::InterestPointSet& features_;
+  std::vector<uint8_t> highPriority_;  // per feature, or empty
+  bool isHighPriority(size_t feature) const {
+    return !highPriority_.empty() && highPriority_[feature];
+  }
   std::vector<std::string> names_;
   std::vector<agent::Role> roles_;
   std::optional<size_t> station_;

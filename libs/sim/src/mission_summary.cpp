@@ -98,6 +98,11 @@ std::string formatSummary(const MissionSummary& s) {
         "(finish rate %.1f %%)%s\n",
         f.total, f.discovered, f.assigned, f.inspected, f.collected, 100.0 * f.finishRate(),
         f.finishTime ? (", all collected at " + fixed(*f.finishTime, 2) + " s").c_str() : "");
+    if (f.priorityTotal > 0)
+      add("priority    %zu high-priority features: collected %zu%s\n", f.priorityTotal,
+          f.priorityCollected,
+          f.priorityFinishTime ? (", all at " + fixed(*f.priorityFinishTime, 2) + " s").c_str()
+                               : "");
     add("meetings    gcs-explorer %llu, explorer-inspector %llu, other %llu\n",
         static_cast<unsigned long long>(f.meetingsGcsExplorer),
         static_cast<unsigned long long>(f.meetingsExplorerInspector),

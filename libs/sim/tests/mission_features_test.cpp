@@ -43,6 +43,7 @@ world::Scenario featureScene() {
 struct Seen {
   std::map<std::string, std::vector<agent::FeatureView>> detected;
   std::map<std::string, std::vector<uint32_t>> inspected, received;
+  std::vector<bool> urgentBoxes;  // the boxes' highPriority flags as the units see them
 };
 
 // The explorer hovers at (6.5, -2, 4) facing the wall; the inspector hovers 5 m from it, camera
@@ -59,6 +60,9 @@ class Scripted final : public agent::Strategy {
     inspected.insert(inspected.end(), view.inspectedFeatures.begin(), view.inspectedFeatures.end());
     auto& received = seen_.received[name_];
     received.insert(received.end(), view.receivedResults.begin(), view.receivedResults.end());
+    if (view.boxes && seen_.urgentBoxes.empty())
+      for (const auto& box : *view.boxes)
+        seen_.urgentBoxes.push_back(box.highPriority);
     agent::AgentCommand command;
     if (name_ == "gcs") return command;
     agent::AgentSetpoint setpoint;
@@ -297,6 +301,59 @@ TEST(FeatureMission, PunctualityComparesPromisedStationMeetingsWithLinks) {
       0u);
 }
 
+// [features] priority_boxes: the features inside the named boxes are high priority: explorers'
+// detections say so, the summary counts their collection apart.
+TEST(FeatureMission, FeaturesInPriorityBoxesAreReportedAndCountedApart) {
+  world::Scenario scene = featureScene();
+  world::OrientedBox left;  // around feature 0 (y = -1) only
+  left.name = "left";
+  left.center = world::Vec3(10, -1, 4);
+  left.size = world::Vec3(1, 1, 1);
+  scene.boxes.push_back(left);
+  Seen seen;
+  const auto registry = scripted(12.0, seen);
+  Mission mission(
+      scene, Config::fromText(kFeatureMission + "[features]\npriority_boxes = left\n", "p.ini"),
+      registry);
+  mission.run();
+  const auto& f = mission.summary().features;
+  ASSERT_EQ(seen.detected["e"].size(), 3u);
+  for (const auto& d : seen.detected["e"])
+    EXPECT_EQ(d.highPriority, d.id == 0) << d.id;
+  EXPECT_EQ(f.highPriority, (std::vector<uint8_t>{1, 0, 0}));
+  EXPECT_EQ(seen.urgentBoxes, (std::vector<bool>{false, true}));  // "face", "left"
+  EXPECT_EQ(f.priorityTotal, 1u);
+  EXPECT_EQ(f.priorityCollected, 1u);
+  ASSERT_TRUE(f.priorityFinishTime);
+  EXPECT_DOUBLE_EQ(*f.priorityFinishTime, f.collectedAt[0]);
+  EXPECT_MENTIONS(formatSummary(mission.summary()),
+                  "priority    1 high-priority features: collected 1");
+
+  // Without the key nothing is high priority and the summary has no priority line.
+  Seen plain;
+  const auto plainRegistry = scripted(12.0, plain);
+  Mission without(scene, Config::fromText(kFeatureMission, "p.ini"), plainRegistry);
+  without.run();
+  EXPECT_EQ(without.summary().features.priorityTotal, 0u);
+  EXPECT_FALSE(without.summary().features.priorityFinishTime);
+  for (const auto& d : plain.detected["e"])
+    EXPECT_FALSE(d.highPriority);
+  EXPECT_EQ(formatSummary(without.summary()).find("priority    "), std::string::npos);
+
+  // A box that holds no feature cannot be an urgent area.
+  world::OrientedBox far;
+  far.name = "far";
+  far.center = world::Vec3(0, 30, 4);
+  far.size = world::Vec3(1, 1, 1);
+  scene.boxes.push_back(far);
+  const auto config =
+      Config::fromText(kFeatureMission + "[features]\npriority_boxes = far\n", "p.ini");
+  const auto message = coinspect::testing::messageOf([&] { Mission(scene, config, registry); });
+  EXPECT_MENTIONS(message, "p.ini");
+  EXPECT_MENTIONS(message, "priority_boxes");
+  EXPECT_MENTIONS(message, "'far' holds no feature");
+}
+
 TEST(FeatureMission, BadFeatureKeysAreErrorsNamingTheKey) {
   Seen seen;
   const auto registry = scripted(12.0, seen);
@@ -313,6 +370,7 @@ TEST(FeatureMission, BadFeatureKeysAreErrorsNamingTheKey) {
   expectError(kFeatureMission + "[features]\nmeeting_gap = nan\n", "meeting_gap");
   expectError(kFeatureMission + "[features]\npunctuality_tolerance = -1\n",
               "punctuality_tolerance");
+  expectError(kFeatureMission + "[features]\npriority_boxes = face roof\n", "priority_boxes");
   expectError("[mission]\nobjective = score\n[strategy]\nname = scripted\n", "objective");
   expectError("[mission]\n[features]\ninspect_time = 2\n[strategy]\nname = scripted\n",
               "[features]");

@@ -102,6 +102,7 @@ void Slei3dStrategy::collectDetections(const agent::AgentView& view) {
     task.normal = f.normal;
     task.viewPosition = view.odometry.position;
     task.viewYaw = view.odometry.yaw;
+    task.highPriority = f.highPriority && options_.priorityFirst;
     pending_.push_back(task);
     ++scannedInBox_;
     boxFeatures_.insert(task.id);
@@ -441,8 +442,8 @@ void Slei3dStrategy::planHandout(const agent::AgentView& view) {
     }
   if (problem.inspectors.empty()) return;
   for (size_t i = 0; i < pending_.size(); ++i)
-    problem.features.push_back(
-        {static_cast<int64_t>(i), pending_[i].position, pending_[i].viewPosition});
+    problem.features.push_back({static_cast<int64_t>(i), pending_[i].position,
+                                pending_[i].viewPosition, pending_[i].highPriority});
   problem.explorationFinished = explorationFinished_ || box_ < 0 || notices;
   std::vector<Handout> planned;
   if (!problem.features.empty()) {

@@ -33,6 +33,10 @@ void Slei3dStrategy::initialise(const agent::AgentView& view) {
   initialised_ = true;
   groundZ_ = view.odometry.position.z() - 0.1;  // every unit starts 0.1 m above the ground
   boxes_ = *view.boxes;
+  // priority_first off: urgent areas are dealt like the others.
+  if (!options_.priorityFirst)
+    for (auto& box : boxes_)
+      box.highPriority = false;
   boxTaken_.assign(boxes_.size(), 0);
   // Frames travel between robots (meetings are short, so a reply carries many).
   coinspect_strategy::RelayOptions relay;
@@ -202,6 +206,7 @@ SleiOptions readOptions(const Config& config) {
   o.maxMeetingLead = number("max_meeting_lead", o.maxMeetingLead, 50.0, 3600.0);
   o.fixInterval = number("fix_interval", o.fixInterval, 10.0, 3600.0);
   o.plan.evenSplit = config.getBool("slei3d", "even_split", o.plan.evenSplit);
+  o.priorityFirst = config.getBool("slei3d", "priority_first", o.priorityFirst);
   o.plan.stationSpeed = number("station_speed", o.plan.stationSpeed, 0.1, 20.0);
   return o;
 }

@@ -49,14 +49,18 @@ std::vector<size_t> inspectorsPerSubgroup(size_t inspectors, size_t explorers, b
 
 int32_t nearestFreeBox(const std::vector<agent::BoxView>& boxes,
                        const std::vector<uint8_t>& assigned, const Vec3& from) {
-  int32_t best = -1;
-  double bestDistance = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < boxes.size(); ++i) {
-    if (i < assigned.size() && assigned[i]) continue;
-    const double d = horizontal(boxes[i].center, from);
-    if (d < bestDistance) bestDistance = d, best = static_cast<int32_t>(i);
+  // High-priority boxes first (urgent areas), then the others.
+  for (const bool urgentOnly : {true, false}) {
+    int32_t best = -1;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < boxes.size(); ++i) {
+      if ((i < assigned.size() && assigned[i]) || (urgentOnly && !boxes[i].highPriority)) continue;
+      const double d = horizontal(boxes[i].center, from);
+      if (d < bestDistance) bestDistance = d, best = static_cast<int32_t>(i);
+    }
+    if (best >= 0) return best;
   }
-  return best;
+  return -1;
 }
 
 std::vector<std::vector<int32_t>> fixedBoxOrders(const std::vector<agent::BoxView>& boxes,

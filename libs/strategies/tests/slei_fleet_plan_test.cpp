@@ -34,6 +34,16 @@ TEST(SleiFleetPlan, NearestFreeBoxSkipsAssignedOnesAndMeasuresHorizontally) {
   EXPECT_EQ(nearestFreeBox(boxes, {1, 1, 1}, agent::Vec3::Zero()), -1);
 }
 
+// Urgent areas ([features] priority_boxes) are dealt first, the nearest of them; then the rest.
+TEST(SleiFleetPlan, NearestFreeBoxTakesHighPriorityBoxesFirst) {
+  std::vector<agent::BoxView> boxes{makeBox({10, 0, 1}, {2, 2, 2}), makeBox({0, 30, 1}, {2, 2, 2}),
+                                    makeBox({-20, 0, 1}, {2, 2, 2})};
+  boxes[1].highPriority = boxes[2].highPriority = true;
+  EXPECT_EQ(nearestFreeBox(boxes, {0, 0, 0}, agent::Vec3::Zero()), 2);
+  EXPECT_EQ(nearestFreeBox(boxes, {0, 0, 1}, agent::Vec3::Zero()), 1);
+  EXPECT_EQ(nearestFreeBox(boxes, {0, 1, 1}, agent::Vec3::Zero()), 0);
+}
+
 // SLEI-PRE: boxes on a line at x = 0, 10, ..., 50; subgroups start at 0 and 50 and take turns,
 // each the free box nearest its last: 10 (from 0), 40 (from 50), 20, 30.
 TEST(SleiFleetPlan, FixedBoxOrdersDealTheRestInTurnsNearestFirst) {

@@ -82,6 +82,7 @@ struct FeatureView {
   Vec3 position = Vec3::Zero();  // world frame, m
   Vec3 normal = Vec3::Zero();    // unit, pointing out of the surface
   double time = 0.0;             // s, simulated, when it was detected
+  bool highPriority = false;     // its tag marks it urgent ([features] priority_boxes)
 };
 
 // The unit's own camera, as its owner configured it (the ppcom network file in CARIC).
@@ -106,6 +107,7 @@ struct BoxView {
   Vec3 center = Vec3::Zero();
   Vec3 size = Vec3::Zero();                                // full edges along the box axes
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // columns: box axes in the world
+  bool highPriority = false;  // feature missions: an urgent area ([features] priority_boxes)
 };
 
 }  // namespace coinspect::agent

@@ -6,8 +6,9 @@
 // (it finishes its current plan first, and cannot take features before the explorer met it).
 // The agents take turns in the meeting order; each takes the unassigned feature whose inspection
 // pose is nearest (3-D, ties to the lower index) to where it is, and its finish time grows by the
-// travel time plus t_q, until every feature is taken. With R = the latest finish time (the
-// "right axis"),
+// travel time plus t_q, until every feature is taken. High-priority features go first (SLEI3D's
+// precedence in allocation): while one is left, a turn takes the nearest high-priority one.
+// With R = the latest finish time (the "right axis"),
 //   agent cost  = sum over agents of (its travel time + R - its finish)
 //   others cost = sum over inspectors not met of max(0, R - max(now, last window start + t_q))
 // i.e. the time the team spends not inspecting until the last feature is done. The reference
@@ -26,6 +27,7 @@ struct PendingFeature {
   int64_t id = 0;
   Vec3 position = Vec3::Zero();     // the feature itself
   Vec3 inspectFrom = Vec3::Zero();  // the hover position an inspector inspects it from
+  bool highPriority = false;        // taken before every other feature
 };
 
 struct AllocationModel {

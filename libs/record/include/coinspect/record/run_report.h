@@ -53,6 +53,10 @@ struct RunReportFeatures {
   // discovered/assigned/inspected/collected -> the times it happened, ascending (the curves of
   // features over time: the k-th time is when the count reached k).
   std::map<std::string, std::vector<double>> timeline;
+  // High-priority features ([features] priority_boxes; 0 when none): how many, collected, and
+  // when all were (absent: not within the budget). Their collection times: timeline "priority".
+  uint64_t priorityTotal = 0, priorityCollected = 0;
+  std::optional<double> priorityFinishTime;
   std::vector<RunReportFeatureUnit> units;  // fleet order
 };
 

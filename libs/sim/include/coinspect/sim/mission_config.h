@@ -50,6 +50,8 @@ struct FeatureConfig {
   double meetingGap = 2.0;             // s a pair's link must have been down for a new meeting
   bool endWhenCollected = true;        // the mission ends when the station holds every feature
   double punctualityTolerance = 10.0;  // s either side of a promised station meeting (delta)
+  // Boxes whose features are high priority (SLEI3D's urgent features): detectors report it.
+  std::vector<std::string> priorityBoxes;
 };
 
 struct MissionConfig {

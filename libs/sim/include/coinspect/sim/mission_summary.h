@@ -77,6 +77,10 @@ struct FeatureSummary {
            promisesRescheduled = 0;
   // Per feature, when it was first discovered, assigned, inspected, collected (NaN: never).
   std::vector<double> discoveredAt, assignedAt, inspectedAt, collectedAt;
+  std::vector<uint8_t> highPriority;  // per feature: 1 when high priority
+  // The high-priority features: how many, collected, when the last of them was (all collected).
+  size_t priorityTotal = 0, priorityCollected = 0;
+  std::optional<double> priorityFinishTime;
   std::vector<FeatureUnitSummary> units;  // fleet order
 };
 

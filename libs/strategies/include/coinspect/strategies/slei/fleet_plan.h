@@ -19,7 +19,8 @@ std::vector<size_t> inspectorsPerSubgroup(size_t inspectors, size_t explorers, b
                                           const std::vector<double>& weights = {});
 
 // The unassigned box (assigned[i] == 0) whose footprint centre is nearest, horizontally, to
-// `from`; -1 when none is left. Ties go to the lower index.
+// `from`, among the high-priority boxes while one is unassigned; -1 when none is left. Ties go
+// to the lower index.
 int32_t nearestFreeBox(const std::vector<agent::BoxView>& boxes,
                        const std::vector<uint8_t>& assigned, const Vec3& from);
 

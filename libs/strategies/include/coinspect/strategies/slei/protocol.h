@@ -30,6 +30,8 @@ struct FeatureTask {
   Vec3 normal = Vec3::Zero();
   Vec3 viewPosition = Vec3::Zero();
   double viewYaw = 0.0;
+  // The explorer's own knowledge (not sent: an inspector visits its list in the order given).
+  bool highPriority = false;
 };
 
 struct Meeting {

@@ -50,6 +50,7 @@ enum class SleiVariant { Slei3d, Pre, Fix, Team, ExploreFirst };
 struct SleiOptions {
   SleiVariant variant = SleiVariant::Slei3d;
   double fixInterval = 120.0;   // s between an explorer's returns to the static station (slei-fix)
+  bool priorityFirst = true;    // high-priority features allocated first (off: like the others)
   double speed = 2.0;           // m/s, UAV cruise
   double exploreHeight = 3.0;   // m above the ground to enter a box
   double meetHeight = 3.0;      // m above the ground where an explorer meets the station
