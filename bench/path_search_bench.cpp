@@ -83,6 +83,33 @@ void BM_ClearanceField(benchmark::State& state) {
 }
 BENCHMARK(BM_ClearanceField)->Unit(benchmark::kMillisecond);
 
+// The update after a change inside a cube of `edge` cells (a scan's or a merge's footprint) in
+// the middle of the scene: the cube's surface toggles between occupied and free each iteration,
+// and VoxelGrid::updateClearance recomputes the field within the cap of it only (the robots'
+// planning grids are rebuilt this way, runtime::RobotMap).
+void BM_ClearanceUpdate(benchmark::State& state) {
+  mapping::VoxelGrid grid = mbsGrid();
+  const int edge = static_cast<int>(state.range(0));
+  const Index3 low(80 - edge / 2, 45 - edge / 2, 30 - edge / 2);
+  const Index3 high = low + Index3::Constant(edge - 1);
+  bool occupied = false;
+  for (auto _ : state) {
+    occupied = !occupied;
+    for (int z = low.z(); z <= high.z(); ++z)
+      for (int y = low.y(); y <= high.y(); ++y)
+        for (int x = low.x(); x <= high.x(); ++x) {
+          const Index3 cell(x, y, z);
+          const bool surface =
+              (cell.array() == low.array()).any() || (cell.array() == high.array()).any();
+          if (surface)
+            grid.set(cell, occupied ? mapping::CellState::Occupied : mapping::CellState::Free);
+        }
+    grid.updateClearance(low, high);
+  }
+  state.counters["cells"] = static_cast<double>(grid.cellCount());
+}
+BENCHMARK(BM_ClearanceUpdate)->Arg(2)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMillisecond);
+
 void search(benchmark::State& state, bool anyAngle) {
   const mapping::VoxelGrid& grid = mbsGrid();
   const Query& query = kQueries[state.range(0)];
