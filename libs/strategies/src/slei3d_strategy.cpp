@@ -53,6 +53,7 @@ void Slei3dStrategy::initialise(const agent::AgentView& view) {
   mapOptions.keyFramesFromView = false;  // through the relay
   mapOptions.include = {view.odometry.position};
   if (unit_.role == agent::Role::Explorer) mapOptions.ownSweepEvery = 2;
+  mapOptions.boxMargin = options_.unknownBoxMargin;
   map_ = std::make_unique<runtime::RobotMap>(mapOptions, boxes_, groundZ_);
   runtime::FlightOptions flight;
   flight.radius = unit_.radius;
@@ -207,6 +208,7 @@ SleiOptions readOptions(const Config& config) {
   o.fixInterval = number("fix_interval", o.fixInterval, 10.0, 3600.0);
   o.plan.evenSplit = config.getBool("slei3d", "even_split", o.plan.evenSplit);
   o.priorityFirst = config.getBool("slei3d", "priority_first", o.priorityFirst);
+  o.unknownBoxMargin = number("unknown_box_margin", o.unknownBoxMargin, 0.0, 10.0);
   o.plan.stationSpeed = number("station_speed", o.plan.stationSpeed, 0.1, 20.0);
   return o;
 }

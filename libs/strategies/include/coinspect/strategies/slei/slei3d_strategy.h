@@ -49,17 +49,19 @@ enum class SleiVariant { Slei3d, Pre, Fix, Team, ExploreFirst };
 
 struct SleiOptions {
   SleiVariant variant = SleiVariant::Slei3d;
-  double fixInterval = 120.0;   // s between an explorer's returns to the static station (slei-fix)
-  bool priorityFirst = true;    // high-priority features allocated first (off: like the others)
-  double speed = 2.0;           // m/s, UAV cruise
-  double exploreHeight = 3.0;   // m above the ground to enter a box
-  double meetHeight = 3.0;      // m above the ground where an explorer meets the station
-  double waitHeight = 6.0;      // m above the ground where inspectors wait for orders
-  double gridResolution = 0.5;  // m, map and planning grid
-  double safetyMargin = 0.4;    // m between a UAV's sphere and mapped surface
-  double sweepDistance = 4.0;   // m from a surface patch to sweep the detector over it
-  double handoutPeriod = 5.0;   // s between hand-out decisions (SOEI's period)
-  double meetingGrace = 10.0;   // s: a meeting partner later than this is given up (delta)
+  double fixInterval = 120.0;  // s between an explorer's returns to the static station (slei-fix)
+  bool priorityFirst = true;   // high-priority features allocated first (off: like the others)
+  // m around the boxes where unknown space blocks paths (runtime::RobotMapOptions::boxMargin).
+  double unknownBoxMargin = 2.0;
+  double speed = 2.0;             // m/s, UAV cruise
+  double exploreHeight = 3.0;     // m above the ground to enter a box
+  double meetHeight = 3.0;        // m above the ground where an explorer meets the station
+  double waitHeight = 6.0;        // m above the ground where inspectors wait for orders
+  double gridResolution = 0.5;    // m, map and planning grid
+  double safetyMargin = 0.4;      // m between a UAV's sphere and mapped surface
+  double sweepDistance = 4.0;     // m from a surface patch to sweep the detector over it
+  double handoutPeriod = 5.0;     // s between hand-out decisions (SOEI's period)
+  double meetingGrace = 10.0;     // s: a meeting partner later than this is given up (delta)
   double inspectPatience = 12.0;  // s at a feature's pose without its inspection: skip it
   // s, longest time to the next station meeting (the reference's 600 s; an explorer done early
   // waits until then when it cannot catch the station sooner)
