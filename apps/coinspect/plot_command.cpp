@@ -44,10 +44,12 @@ RunArgument parseRunArgument(const std::string& text) {
 
 void requireStage(const std::string& stage) {
   const auto& stages = featureStages();
-  if (std::find(stages.begin(), stages.end(), stage) == stages.end())
-    throw InputError(
-        "--stage", "",
-        "'" + stage + "' is not a stage: discovered, assigned, inspected, collected or priority");
+  if (std::find(stages.begin(), stages.end(), stage) != stages.end()) return;
+  // The list from featureStages(), so that a new stage cannot be left out of the message.
+  std::string known;
+  for (size_t i = 0; i < stages.size(); ++i)
+    known += (i == 0 ? "" : i + 1 == stages.size() ? " or " : ", ") + stages[i];
+  throw InputError("--stage", "", "'" + stage + "' is not a stage: " + known);
 }
 
 // The given labels; for the others the strategy, and when another run without a label has the
