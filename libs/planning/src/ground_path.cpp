@@ -39,12 +39,17 @@ void GroundGrid::blockRectangle(const Vec2& centre, const Vec2& axisX, const Vec
     }
 }
 
-void GroundGrid::blockDisc(const Vec2& p, double radius) {
+size_t GroundGrid::blockDisc(const Vec2& p, double radius) {
   const auto c = cellOf(p);
   const int r = static_cast<int>(std::ceil(radius / resolution_)) + 1;
+  size_t newly = 0;
   for (int y = c.y() - r; y <= c.y() + r; ++y)
     for (int x = c.x() - r; x <= c.x() + r; ++x)
-      if (inside(x, y) && (centre(x, y) - p).norm() <= radius) blocked_[index(x, y)] = 1;
+      if (inside(x, y) && (centre(x, y) - p).norm() <= radius) {
+        newly += blocked_[index(x, y)] == 0;
+        blocked_[index(x, y)] = 1;
+      }
+  return newly;
 }
 
 bool GroundGrid::blocked(const Vec2& p) const {

@@ -46,7 +46,8 @@ TEST(GroundPath, RotatedBoxesAndLearntWallsAreObstacles) {
   grid.blockRectangle(Vec2(0, 0), diagonal, Vec2(4, 0.5), 0.0);
   EXPECT_TRUE(grid.blocked(Vec2(2, 2)));    // along the rotated long axis
   EXPECT_FALSE(grid.blocked(Vec2(2, -2)));  // across it
-  grid.blockDisc(Vec2(-5, 5), 1.5);
+  EXPECT_GT(grid.blockDisc(Vec2(-5, 5), 1.5), 0u);
+  EXPECT_EQ(grid.blockDisc(Vec2(-5, 5), 1.5), 0u);  // nothing new the second time
   EXPECT_TRUE(grid.blocked(Vec2(-5, 6.2)));
   EXPECT_FALSE(grid.blocked(Vec2(-5, 7)));
   expectClear(grid, Vec2(-6, 2), grid.path(Vec2(-6, 2), Vec2(-4, 8)));

@@ -9,16 +9,13 @@ namespace coinspect::strategies::slei {
 
 namespace {
 
-constexpr double kNoMeeting = 1e300;      // Reply::next.time when the explorer has nothing left
-constexpr double kArrived = 0.5;          // m from a meeting place that counts as there
-constexpr double kMinRemaining = 50.0;    // s (the reference's floor)
-constexpr double kNewBoxLead = 60.0;      // s to the first meeting in a new box (the reference)
-constexpr double kPresumedLost = 6.0;     // meeting graces after its time: the explorer is lost
-constexpr double kGroundCell = 0.5;       // m, the station's ground grid
-constexpr double kGroundMargin = 15.0;    // m around the boxes that the grid covers
-constexpr double kGroundClearance = 0.5;  // m kept from a box's footprint beyond its radius
-constexpr double kStuckDistance = 0.2;    // m: moved less than this ...
-constexpr double kStuckTime = 3.0;        // s ... for this long while driving: blocked
+constexpr double kNoMeeting = 1e300;    // Reply::next.time when the explorer has nothing left
+constexpr double kArrived = 0.5;        // m from a meeting place that counts as there
+constexpr double kMinRemaining = 50.0;  // s (the reference's floor)
+constexpr double kNewBoxLead = 60.0;    // s to the first meeting in a new box (the reference)
+constexpr double kPresumedLost = 6.0;   // meeting graces after its time: the explorer is lost
+constexpr double kStuckDistance = 0.2;  // m: moved less than this ...
+constexpr double kStuckTime = 3.0;      // s ... for this long while driving: blocked
 constexpr double kBlockAhead = 0.8, kBlockRadius = 0.7;  // m: the ground it then blocks
 
 }  // namespace
@@ -181,25 +178,8 @@ void Slei3dStrategy::driveStation(const agent::AgentView& view, const Vec3& goal
                                   agent::AgentCommand& command) {
   const Vec3 here = view.odometry.position;
   const planning::Vec2 at = here.head<2>();
-  if (!ground_) {
-    planning::Vec2 low = at, high = at;
-    for (const auto& box : boxes_)
-      for (const double sx : {-0.5, 0.5})
-        for (const double sy : {-0.5, 0.5}) {
-          const Vec3 corner =
-              box.center + box.rotation * Vec3(sx * box.size.x(), sy * box.size.y(), 0);
-          low = low.cwiseMin(corner.head<2>());
-          high = high.cwiseMax(corner.head<2>());
-        }
-    const planning::Vec2 margin = planning::Vec2::Constant(kGroundMargin);
-    ground_ = std::make_unique<planning::GroundGrid>(low - margin, high + margin, kGroundCell);
-    for (const auto& box : boxes_) {
-      // Boxes turn about the vertical only; a box standing on its side keeps its x axis.
-      const planning::Vec2 axis = box.rotation.col(0).head<2>();
-      ground_->blockRectangle(box.center.head<2>(),
-                              axis.norm() > 1e-6 ? axis : planning::Vec2::UnitX(),
-                              0.5 * box.size.head<2>(), unit_.radius + kGroundClearance);
-    }
+  if (!drivenYet_) {
+    drivenYet_ = true;
     lastMoved_ = here;
     lastMovedTime_ = view.time;
   }

@@ -43,7 +43,12 @@ void Slei3dStrategy::initialise(const agent::AgentView& view) {
   relay.digestPeriod = 1.0;
   relay.framesPerReply = 200;
   relay_ = std::make_unique<coinspect_strategy::KeyFrameRelay>(relay, names_);
-  if (unit_.role == agent::Role::GroundStation) return;
+  if (unit_.role == agent::Role::GroundStation) {
+    // The ground it drives on; it learns walls from the key frames it carries.
+    ground_ = std::make_unique<planning::GroundGrid>(
+        stationGroundGrid(boxes_, view.odometry.position.head<2>(), unit_.radius));
+    return;
+  }
   runtime::RobotMapOptions mapOptions;
   // A finer grid than the CARIC strategies': the scenes are small, and the clearance a path
   // needs (radius + margin + a cell's diagonal) sets how low a UAV can fly, while the detector
@@ -139,6 +144,12 @@ double Slei3dStrategy::boxExploredFraction(int32_t box) const {
   return total ? static_cast<double>(known) / static_cast<double>(total) : 1.0;
 }
 
+void Slei3dStrategy::learnGround(const agent::KeyFrame& frame) {
+  // A station that learns a wall plans its way again.
+  if (blockGroundObstacles(*ground_, frame.points, groundZ_, unit_.radius + kGroundClearance) > 0)
+    driveGoal_ = Vec3::Constant(1e300);
+}
+
 agent::AgentCommand Slei3dStrategy::fly(const agent::AgentView& view, std::optional<Vec3> aim) {
   agent::AgentCommand command;
   command.setpoint = flight_->step(view, *map_);
@@ -162,7 +173,9 @@ agent::AgentCommand Slei3dStrategy::decide(const agent::AgentView& view) {
     map_->update(view);
     map_->refresh(view.time);
   } else {
-    relay_->takeNew(std::numeric_limits<size_t>::max());  // the station keeps no map
+    // The station keeps no map, only its ground.
+    for (const auto& frame : relay_->takeNew(std::numeric_limits<size_t>::max()))
+      learnGround(*frame);
   }
   readPlan(view);
   agent::AgentCommand command;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <unordered_set>
 
 #include "coinspect/planning/slei_schedule.h"
 #include "coinspect/strategies/runtime/box_geometry.h"
@@ -10,6 +11,9 @@
 namespace coinspect::strategies::slei {
 
 namespace {
+
+constexpr double kGroundCell = 0.5;     // m, the station's ground grid
+constexpr double kGroundMargin = 15.0;  // m around the boxes that the grid covers
 
 double horizontal(const Vec3& a, const Vec3& b) {
   return std::hypot(a.x() - b.x(), a.y() - b.y());
@@ -175,6 +179,46 @@ FleetPlan makeFleetPlan(const std::vector<agent::FleetMember>& fleet,
     at = corner;
   }
   return plan;
+}
+
+planning::GroundGrid stationGroundGrid(const std::vector<agent::BoxView>& boxes,
+                                       const planning::Vec2& also, double radius) {
+  planning::Vec2 low = also, high = also;
+  for (const auto& box : boxes)
+    for (const double sx : {-0.5, 0.5})
+      for (const double sy : {-0.5, 0.5}) {
+        const Vec3 corner =
+            box.center + box.rotation * Vec3(sx * box.size.x(), sy * box.size.y(), 0);
+        low = low.cwiseMin(corner.head<2>());
+        high = high.cwiseMax(corner.head<2>());
+      }
+  const planning::Vec2 margin = planning::Vec2::Constant(kGroundMargin);
+  planning::GroundGrid ground(low - margin, high + margin, kGroundCell);
+  for (const auto& box : boxes) {
+    // Boxes turn about the vertical only; a box standing on its side keeps its x axis.
+    const planning::Vec2 axis = box.rotation.col(0).head<2>();
+    ground.blockRectangle(box.center.head<2>(), axis.norm() > 1e-6 ? axis : planning::Vec2::UnitX(),
+                          0.5 * box.size.head<2>(), radius + kGroundClearance);
+  }
+  return ground;
+}
+
+size_t blockGroundObstacles(planning::GroundGrid& ground,
+                            const std::vector<Eigen::Vector3f>& points, double groundZ,
+                            double inflate) {
+  constexpr double kLow = 0.3, kHigh = 2.0;  // m above the ground: a ground vehicle's height
+  const double cell = ground.resolution();
+  std::unordered_set<int64_t> done;
+  size_t newly = 0;
+  for (const auto& point : points) {
+    const double height = point.z() - groundZ;
+    if (height < kLow || height > kHigh) continue;
+    const auto x = static_cast<int64_t>(std::floor(point.x() / cell));
+    const auto y = static_cast<int64_t>(std::floor(point.y() / cell));
+    if (!done.insert(x * 1000003 + y).second) continue;
+    newly += ground.blockDisc(planning::Vec2((x + 0.5) * cell, (y + 0.5) * cell), inflate);
+  }
+  return newly;
 }
 
 }  // namespace coinspect::strategies::slei

@@ -1,5 +1,8 @@
 #include "coinspect/strategies/slei/fleet_plan.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "test_boxes.h"
@@ -85,6 +88,43 @@ TEST(SleiFleetPlan, CornersInsideAnotherBoxAreSkipped) {
   const std::vector<agent::BoxView> nested{makeBox({0, 0, 5}, {2, 2, 10}),
                                            makeBox({0, 0, 5}, {40, 40, 10})};
   EXPECT_TRUE(boxCorner(nested, 0, 2.0, 0.5, from).isApprox(boxCorner(nested[0], 2.0, 0.5, from)));
+}
+
+// A wall 20 m long across y = 10 from x = -10 to 10, as LiDAR points from 0 to 4 m high; the
+// ground at z = 0.
+std::vector<Eigen::Vector3f> wallPoints() {
+  std::vector<Eigen::Vector3f> points;
+  for (float x = -10; x <= 10; x += 0.2f)
+    for (float z = 0; z <= 4; z += 0.25f)
+      points.emplace_back(x, 10.0f, z);
+  return points;
+}
+
+TEST(SleiFleetPlan, TheStationLearnsWallsFromLidarPointsAtItsHeightOnly) {
+  const std::vector<agent::BoxView> boxes{makeBox({0, -10, 5}, {4, 4, 10})};
+  auto ground = stationGroundGrid(boxes, planning::Vec2(0, 20), 0.5);
+  EXPECT_TRUE(ground.blocked(planning::Vec2(0, -10)));    // the box's footprint
+  EXPECT_TRUE(ground.blocked(planning::Vec2(2.9, -10)));  // + radius + clearance
+  EXPECT_FALSE(ground.blocked(planning::Vec2(3.2, -10)));
+  EXPECT_FALSE(ground.blocked(planning::Vec2(0, 10)));  // the wall is not known yet
+  EXPECT_FALSE(ground.path(planning::Vec2(0, 0), planning::Vec2(0, 20)).empty());
+  // The ground and an overhang teach nothing; a wall does, once.
+  std::vector<Eigen::Vector3f> ground_and_roof;
+  for (float x = -5; x <= 5; x += 0.2f)
+    ground_and_roof.emplace_back(x, 5.0f, 0.1f);
+  for (float x = -5; x <= 5; x += 0.2f)
+    ground_and_roof.emplace_back(x, 5.0f, 3.0f);
+  EXPECT_EQ(blockGroundObstacles(ground, ground_and_roof, 0.0, 1.0), 0u);
+  EXPECT_GT(blockGroundObstacles(ground, wallPoints(), 0.0, 1.0), 0u);
+  EXPECT_EQ(blockGroundObstacles(ground, wallPoints(), 0.0, 1.0), 0u);
+  EXPECT_TRUE(ground.blocked(planning::Vec2(0, 10)));
+  EXPECT_TRUE(ground.blocked(planning::Vec2(5, 10.8)));  // inflated
+  // The way north now goes round the wall's end.
+  const auto path = ground.path(planning::Vec2(0, 0), planning::Vec2(0, 20));
+  ASSERT_FALSE(path.empty());
+  const bool round = std::any_of(path.begin(), path.end(),
+                                 [](const planning::Vec2& p) { return std::abs(p.x()) > 10.0; });
+  EXPECT_TRUE(round);
 }
 
 TEST(SleiFleetPlan, ExplorersTakeTheNearestBoxesInTurnAndMeetTheStationInAChain) {

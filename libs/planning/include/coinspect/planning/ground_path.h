@@ -21,8 +21,8 @@ class GroundGrid {
   // Blocks the cells whose centre lies within `inflate` of the rectangle centred at `centre`
   // with half extents `half` along the unit axes `axisX` and its perpendicular.
   void blockRectangle(const Vec2& centre, const Vec2& axisX, const Vec2& half, double inflate);
-  // Blocks the cells whose centre lies within `radius` of `p`.
-  void blockDisc(const Vec2& p, double radius);
+  // Blocks the cells whose centre lies within `radius` of `p`; returns how many were free.
+  size_t blockDisc(const Vec2& p, double radius);
 
   bool blocked(const Vec2& p) const;  // outside the grid: blocked
   double resolution() const { return resolution_; }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "coinspect/agent/observations.h"
+#include "coinspect/planning/ground_path.h"
 #include "coinspect/strategies/slei/protocol.h"
 
 namespace coinspect::strategies::slei {
@@ -50,6 +51,21 @@ Vec3 boxCorner(const std::vector<agent::BoxView>& boxes, size_t index, double of
 // `corner` moved `distance` m horizontally away from the box's footprint centre, at height z:
 // where a UAV waits near a corner without crowding the structure or the station there.
 Vec3 awayFromBox(const agent::BoxView& box, const Vec3& corner, double distance, double z);
+
+// The ground a station of collision radius `radius` knows from the start: a grid over the boxes
+// and `also` with 15 m around, the boxes' footprints blocked (inflated by the radius and
+// kGroundClearance).
+inline constexpr double kGroundClearance = 0.5;  // m kept from an obstacle beyond the radius
+planning::GroundGrid stationGroundGrid(const std::vector<agent::BoxView>& boxes,
+                                       const planning::Vec2& also, double radius);
+
+// What the station learns of its ground from the LiDAR points it carries (key frames relayed
+// by the explorers, world frame): a point between 0.3 and 2 m above `groundZ` is an obstacle
+// for a ground vehicle (a wall outside every box; the ground itself and overhangs are not),
+// blocked with `inflate` m around it (once per ground cell). Returns the cells newly blocked.
+size_t blockGroundObstacles(planning::GroundGrid& ground,
+                            const std::vector<Eigen::Vector3f>& points, double groundZ,
+                            double inflate);
 
 struct PlanOptions {
   bool evenSplit = true;

@@ -52,7 +52,9 @@ struct SleiOptions {
   double fixInterval = 120.0;  // s between an explorer's returns to the static station (slei-fix)
   bool priorityFirst = true;   // high-priority features allocated first (off: like the others)
   // m around the boxes where unknown space blocks paths (runtime::RobotMapOptions::boxMargin).
-  double unknownBoxMargin = 2.0;
+  // The generated SLEI scenes' boxes enclose their structures with 1 m to spare; 2 m closed
+  // slei-c's 6 m streets to every UAV that had not mapped them.
+  double unknownBoxMargin = 1.0;
   double speed = 2.0;             // m/s, UAV cruise
   double exploreHeight = 3.0;     // m above the ground to enter a box
   double meetHeight = 3.0;        // m above the ground where an explorer meets the station
@@ -85,6 +87,8 @@ class Slei3dStrategy : public agent::Strategy {
   void send(agent::AgentCommand& command, uint32_t to, const char* topic,
             std::vector<uint8_t> bytes) const;
   agent::AgentCommand fly(const agent::AgentView& view, std::optional<Vec3> aim);
+  // The station: walls in a key frame's points onto its ground.
+  void learnGround(const agent::KeyFrame& frame);
   const Subgroup* subgroupOf(uint32_t unit) const;
   // Where the k-th inspector of a subgroup waits for its first orders: off the corner of the
   // first box where the station first meets the explorer, 2.5 m apart, away from the box
@@ -152,8 +156,10 @@ class Slei3dStrategy : public agent::Strategy {
   std::vector<uint8_t> boxTaken_;               // per box: assigned to some subgroup
   std::vector<std::vector<int32_t>> boxOrder_;  // fixed orders: per subgroup, boxes left
   Vec3 staticPlace_ = Vec3::Zero();             // where it started: a static station stays there
-  // Its ground paths: around the boxes' footprints and where it found its way blocked.
+  // Its ground paths: around the boxes' footprints, the walls in the key frames it carries and
+  // where it found its way blocked.
   std::unique_ptr<planning::GroundGrid> ground_;
+  bool drivenYet_ = false;
   std::vector<planning::Vec2> drive_;  // waypoints to the next meeting place
   Vec3 driveGoal_ = Vec3::Constant(1e300);
   Vec3 lastMoved_ = Vec3::Zero();  // where it was when it last moved
