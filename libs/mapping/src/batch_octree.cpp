@@ -41,7 +41,8 @@ void sortUniqueCodes(std::vector<uint64_t>& codes, std::vector<uint64_t>& buffer
   codes.resize(out);
 }
 
-void BatchOcTree::applySorted(const std::vector<uint64_t>& codes, bool missesClearOccupied) {
+void BatchOcTree::applySorted(const std::vector<uint64_t>& codes, bool missesClearOccupied,
+                              const std::function<bool(const Vec3&)>* clearAt) {
   if (codes.empty()) return;
   bool createdRoot = false;
   if (root == nullptr) {
@@ -49,7 +50,15 @@ void BatchOcTree::applySorted(const std::vector<uint64_t>& codes, bool missesCle
     ++tree_size;
     createdRoot = true;
   }
+  clearAt_ = clearAt;
   descend(root, createdRoot, 0, codes.data(), codes.data() + codes.size(), missesClearOccupied);
+  clearAt_ = nullptr;
+}
+
+bool BatchOcTree::missClears(uint64_t code) const {
+  if (clearAt_ == nullptr) return false;
+  const octomap::point3d c = keyToCoord(keyOfCode(code));
+  return (*clearAt_)(Vec3(c.x(), c.y(), c.z()));
 }
 
 void BatchOcTree::descend(octomap::OcTreeNode* node, bool justCreated, unsigned depth,
@@ -58,7 +67,7 @@ void BatchOcTree::descend(octomap::OcTreeNode* node, bool justCreated, unsigned 
     COINSPECT_ASSERT(end - begin == 1);  // the codes are unique per cell
     const bool wasOccupied = !justCreated && isNodeOccupied(node);
     const bool hit = (*begin & 1U) != 0;
-    if (!hit && wasOccupied && !missesClearOccupied) return;
+    if (!hit && wasOccupied && !missesClearOccupied && !missClears(*begin)) return;
     updateNodeLogOdds(node, hit ? prob_hit_log : prob_miss_log);
     const bool isOccupied = isNodeOccupied(node);
     if (justCreated) ++known_;

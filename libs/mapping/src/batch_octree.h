@@ -14,7 +14,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
+
+#include "coinspect/mapping/voxel_grid.h"  // Vec3
 
 namespace coinspect::mapping {
 
@@ -38,6 +41,22 @@ inline uint64_t updateCode(const octomap::OcTreeKey& key, bool occupied) {
   return (mortonOf(key) << 1) | (occupied ? 1U : 0U);
 }
 
+inline uint64_t compactBits16(uint64_t v) {
+  v &= 0x249249249249ULL;
+  v = (v | (v >> 2)) & 0x0c30c30c30c3ULL;
+  v = (v | (v >> 4)) & 0x00f00f00f00fULL;
+  v = (v | (v >> 8)) & 0x0000ff0000ffULL;
+  v = (v | (v >> 16)) & 0xffffULL;
+  return v;
+}
+
+inline octomap::OcTreeKey keyOfCode(uint64_t code) {
+  const uint64_t morton = code >> 1;
+  return octomap::OcTreeKey(static_cast<octomap::key_type>(compactBits16(morton)),
+                            static_cast<octomap::key_type>(compactBits16(morton >> 1)),
+                            static_cast<octomap::key_type>(compactBits16(morton >> 2)));
+}
+
 // Sorts `codes` ascending (LSD radix sort, 11-bit digits, passes whose digit is constant
 // skipped), removes repeated cells keeping the occupied code of a cell when there is one.
 void sortUniqueCodes(std::vector<uint64_t>& codes, std::vector<uint64_t>& buffer);
@@ -47,8 +66,10 @@ class BatchOcTree : public octomap::OcTree {
   explicit BatchOcTree(double resolution) : octomap::OcTree(resolution) {}
 
   // Applies one hit or miss to each cell of `codes` (sorted ascending, one code per cell); with
-  // `missesClearOccupied` false, a miss leaves an occupied cell as it is.
-  void applySorted(const std::vector<uint64_t>& codes, bool missesClearOccupied);
+  // `missesClearOccupied` false, a miss leaves an occupied cell as it is, unless `clearAt` (when
+  // given) says so for the cell's centre.
+  void applySorted(const std::vector<uint64_t>& codes, bool missesClearOccupied,
+                   const std::function<bool(const Vec3&)>* clearAt = nullptr);
 
   // Appends one update code per leaf (occupied or free as the leaf is), in ascending order: the
   // depth-first walk in child-index order is the Morton order.
@@ -60,6 +81,8 @@ class BatchOcTree : public octomap::OcTree {
  private:
   void descend(octomap::OcTreeNode* node, bool justCreated, unsigned depth, const uint64_t* begin,
                const uint64_t* end, bool missesClearOccupied);
+  bool missClears(uint64_t code) const;
+  const std::function<bool(const Vec3&)>* clearAt_ = nullptr;  // during applySorted
   void appendLeafCodes(const octomap::OcTreeNode* node, unsigned depth, uint64_t morton,
                        std::vector<uint64_t>& codes) const;
 

@@ -20,22 +20,6 @@ inline bool keyOf(const octomap::OcTree& tree, const Vec3& p, octomap::OcTreeKey
   return p.allFinite() && tree.coordToKeyChecked(p.x(), p.y(), p.z(), key);
 }
 
-inline uint64_t compactBits16(uint64_t v) {
-  v &= 0x249249249249ULL;
-  v = (v | (v >> 2)) & 0x0c30c30c30c3ULL;
-  v = (v | (v >> 4)) & 0x00f00f00f00fULL;
-  v = (v | (v >> 8)) & 0x0000ff0000ffULL;
-  v = (v | (v >> 16)) & 0xffffULL;
-  return v;
-}
-
-inline octomap::OcTreeKey keyOfCode(uint64_t code) {
-  const uint64_t morton = code >> 1;
-  return octomap::OcTreeKey(static_cast<octomap::key_type>(compactBits16(morton)),
-                            static_cast<octomap::key_type>(compactBits16(morton >> 1)),
-                            static_cast<octomap::key_type>(compactBits16(morton >> 2)));
-}
-
 }  // namespace
 
 OccupancyMap::OccupancyMap(const OccupancyMapOptions& options) : options_(options) {
@@ -106,7 +90,7 @@ void OccupancyMap::merge(const OccupancyMap& other) {
   std::vector<uint64_t> codes;  // not scratch_: `other` may be this map
   codes.reserve(other.batch_->knownCells());
   other.batch_->appendLeafCodes(codes);  // already sorted, one per cell
-  batch_->applySorted(codes, options_.raysClearOccupied);
+  batch_->applySorted(codes, options_.raysClearOccupied, raysClearAt_ ? &raysClearAt_ : nullptr);
 }
 
 void OccupancyMap::observeCells(const std::vector<Vec3>& freePoints,
@@ -123,7 +107,7 @@ void OccupancyMap::observeCells(const std::vector<Vec3>& freePoints,
 
 void OccupancyMap::applyScratch(bool missesClearOccupied) {
   sortUniqueCodes(scratch_, sortBuffer_);
-  batch_->applySorted(scratch_, missesClearOccupied);
+  batch_->applySorted(scratch_, missesClearOccupied, raysClearAt_ ? &raysClearAt_ : nullptr);
 }
 
 CellState OccupancyMap::state(const Vec3& point) const {

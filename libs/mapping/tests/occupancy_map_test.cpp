@@ -132,6 +132,26 @@ TEST(OccupancyMap, RaysLeaveOccupiedCellsWhenTheyMayNotClearThem) {
   }
 }
 
+// Under the static-world rule, rays still clear occupied cells where raysClearAt allows it: a
+// UAV seen from afar (a small blob in the open) leaves the map once rays pass where it was,
+// structure where the robot knows structure can be stays.
+TEST(OccupancyMap, RaysClearOccupiedCellsWhereTheRobotAllowsIt) {
+  const Vec3 origin(0.1, 0.2, 1.3);
+  // Two blobs in front of a wall at x = 12.25: one at y = 0.25 (may clear), one at y = 4.25.
+  const Points blobs{{6.2f, 0.2f, 1.3f}, {6.2f, 4.2f, 1.3f}};
+  const Points wall = wallAt(12.25, origin, 6.0, 0.05);
+  OccupancyMap map({0.5, 30.0, false});
+  map.setRaysClearAt([](const Vec3& cell) { return cell.y() < 2.0; });
+  map.insertScan(origin, blobs);
+  ASSERT_EQ(map.state(Vec3(6.25, 0.25, 1.25)), CellState::Occupied);
+  ASSERT_EQ(map.state(Vec3(6.25, 4.25, 1.25)), CellState::Occupied);
+  for (int i = 0; i < 12; ++i)
+    map.insertScan(origin, wall);
+  EXPECT_EQ(map.state(Vec3(6.25, 0.25, 1.25)), CellState::Free);
+  EXPECT_EQ(map.state(Vec3(6.25, 4.25, 1.25)), CellState::Occupied);
+  EXPECT_EQ(map.state(Vec3(12.25, 0.25, 1.25)), CellState::Occupied);  // the wall itself stays
+}
+
 // Merging a map that saw a cell free does not clear it either under the static-world rule.
 TEST(OccupancyMap, MergeLeavesOccupiedCellsWhenRaysMayNotClearThem) {
   const Vec3 origin(0.1, 0.2, 1.3);

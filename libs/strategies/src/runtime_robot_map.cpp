@@ -37,6 +37,23 @@ bool parseUnknownSpace(const std::string& text, UnknownSpace* out) {
 
 namespace {
 
+constexpr double kGroundBand = 1.0;  // m above the ground where rays never clear (raysClear...)
+
+// raysClearAwayFromBoxes' rule, with its own copy of the zone (the map moves with its owner):
+// rays clear outside the zone where unknown blocks and above the ground band.
+struct RaysClearAway {
+  Vec3 origin;
+  double resolution;
+  mapping::Index3 size;
+  std::vector<uint8_t> zone;  // per grid cell, z then y then x
+  double floor;
+  bool operator()(const Vec3& p) const {
+    const mapping::Index3 c = ((p - origin) / resolution).array().floor().cast<int>().matrix();
+    if (p.z() <= floor || (c.array() < 0).any() || (c.array() >= size.array()).any()) return false;
+    return !zone[(static_cast<size_t>(c.z()) * size.y() + c.y()) * size.x() + c.x()];
+  }
+};
+
 // The mission region, grown to hold every point of `options.include` with the margin's room.
 Aabb regionAround(const std::vector<BoxView>& boxes, const RobotMapOptions& options,
                   double groundZ) {
@@ -87,6 +104,9 @@ RobotMap::RobotMap(const RobotMapOptions& options, const std::vector<BoxView>& b
               blocks = 1;
           }
     }
+    if (options.raysClearAwayFromBoxes)
+      map_.setRaysClearAt(
+          RaysClearAway{grid_.origin(), res, size, blockUnknown_, groundZ + kGroundBand});
   }
   rebuild();
 }

@@ -59,6 +59,9 @@ void Slei3dStrategy::initialise(const agent::AgentView& view) {
   mapOptions.include = {view.odometry.position};
   if (unit_.role == agent::Role::Explorer) mapOptions.ownSweepEvery = 2;
   mapOptions.boxMargin = options_.unknownBoxMargin;
+  // Teammates seen from beyond the 5 m link are not filtered from scans: without this they
+  // stayed in the maps as obstacles (one closed the way in front of slei-b's building).
+  mapOptions.raysClearAwayFromBoxes = true;
   map_ = std::make_unique<runtime::RobotMap>(mapOptions, boxes_, groundZ_);
   runtime::FlightOptions flight;
   flight.radius = unit_.radius;

@@ -39,6 +39,35 @@ TEST(RobotMap, TheRegionAlsoHoldsTheIncludedPoints) {
   EXPECT_TRUE(grown.grid().contains(grown.grid().cellOf(Vec3(12, -30, 0.1))));
 }
 
+// A blob the size of a UAV seen at (5, 0, 3), in the open, and one at (8.5, 0, 3), within the
+// 2 m margin of the box (x from 9): rays passing later clear the first one only, and only with
+// raysClearAwayFromBoxes; the box's wall behind them stays.
+TEST(RobotMap, RaysClearWhatWasSeenInTheOpenButNotNearTheBoxes) {
+  const std::vector<BoxView> boxes = {makeBox(Vec3(12, 0, 5), Vec3(6, 10, 10))};
+  agent::KeyFrame blobs;
+  blobs.position = Vec3(0, 0, 3);
+  for (const float x : {5.1f, 8.6f})
+    blobs.points.emplace_back(x, 0.1f, 3.1f);
+  agent::KeyFrame wall = wallsAndGround();
+  wall.position = Vec3(0, 0, 3);
+  for (const bool clears : {false, true}) {
+    RobotMapOptions options;
+    options.mapResolution = 0.5;
+    options.boxMargin = 2.0;
+    options.raysClearAwayFromBoxes = clears;
+    RobotMap map(options, boxes, 0.0);
+    map.insertFrame(blobs);
+    ASSERT_EQ(map.map().state(Vec3(5.25, 0.25, 3.25)), mapping::CellState::Occupied);
+    for (int i = 0; i < 12; ++i)
+      map.insertFrame(wall);
+    EXPECT_EQ(map.map().state(Vec3(5.25, 0.25, 3.25)),
+              clears ? mapping::CellState::Free : mapping::CellState::Occupied)
+        << clears;
+    EXPECT_EQ(map.map().state(Vec3(8.75, 0.25, 3.25)), mapping::CellState::Occupied) << clears;
+    EXPECT_EQ(map.map().state(Vec3(10.25, 0.25, 3.25)), mapping::CellState::Occupied) << clears;
+  }
+}
+
 TEST(RobotMap, SurfaceNearBoxesKeepsMappedStructureInABoxNotTheGroundNorStructureFarFromBoxes) {
   const std::vector<BoxView> boxes = {makeBox(Vec3(12, 0, 5), Vec3(6, 10, 10))};
   RobotMapOptions options;

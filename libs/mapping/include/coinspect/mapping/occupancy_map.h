@@ -7,7 +7,9 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "coinspect/mapping/voxel_grid.h"
@@ -66,6 +68,12 @@ class OccupancyMap {
   // robot's body is there), which is why these free observations apply even when
   // `raysClearOccupied` is false.
   void observeCells(const std::vector<Vec3>& freePoints, const std::vector<Vec3>& occupiedPoints);
+  // With raysClearOccupied false: where rays clear occupied cells after all (called with the
+  // cell's centre; empty: nowhere). A robot that knows where structure can be keeps it there and
+  // lets moving things elsewhere (another UAV seen from afar) leave its map once rays pass.
+  void setRaysClearAt(std::function<bool(const Vec3&)> clearAt) {
+    raysClearAt_ = std::move(clearAt);
+  }
 
   CellState state(const Vec3& point) const;
   // Distance (m) from `point` to the nearest occupied cell centre, `maxDistance` if none nearer.
@@ -96,6 +104,7 @@ class OccupancyMap {
   void applyScratch(bool missesClearOccupied);
 
   OccupancyMapOptions options_;
+  std::function<bool(const Vec3&)> raysClearAt_;
   std::unique_ptr<octomap::OcTree> tree_;  // a BatchOcTree (src/batch_octree.h)
   BatchOcTree* batch_ = nullptr;           // the same object, with the batched update
   std::vector<uint64_t> scratch_;          // update codes of the current scan (reused)

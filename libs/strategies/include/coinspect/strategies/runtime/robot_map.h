@@ -46,6 +46,10 @@ struct RobotMapOptions {
   // static; see mapping::OccupancyMapOptions): a thin wing's trailing edge, seen at grazing
   // angles, was erased and a photographer flew into it. Only a robot's body clears such a cell.
   bool raysClearOccupied = false;
+  // BlockedNearBoxes only: rays do clear occupied cells outside the blocking zone and more than
+  // 1 m above the ground (structure stands in the boxes; a UAV seen there from afar, beyond the
+  // link that would have told where it was, is gone once rays pass through).
+  bool raysClearAwayFromBoxes = false;
   // Points the region must also hold (2 m around them horizontally), e.g. where the robot
   // starts: a start outside the boxes' region plus margin could not plan its way in.
   std::vector<Vec3> include;
