@@ -79,10 +79,11 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
   caster = std::make_unique<world::RayCaster>(scenario.meshes, scenario.groundZ);
   linkModel =
       comms::makeLinkModel(config.links, config.linkRange, config.source + ": [mission] links");
-  const auto& urgent = config.features.priorityBoxes;
-  for (const auto& box : scenario.boxes)
-    boxes.push_back({box.center, box.size, box.rotation,
-                     std::find(urgent.begin(), urgent.end(), box.name) != urgent.end()});
+  const auto urgent = priorityBoxFlags(config.features.priorityBoxes, scenario, config.source);
+  for (size_t b = 0; b < scenario.boxes.size(); ++b) {
+    const auto& box = scenario.boxes[b];
+    boxes.push_back({box.center, box.size, box.rotation, urgent[b] != 0});
+  }
 
   const auto airframes = vehicle::loadAirframes(config.airframes);
   const auto& explorerFrame =
@@ -164,8 +165,8 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
     }
     features = std::make_unique<FeatureTracker>(
         config.features, scenario.interestPoints,
-        highPriorityFeatures(config.features.priorityBoxes, scenario, config.source),
-        std::move(names), std::move(roles), station,
+        highPriorityFeatures(urgent, scenario, config.source), std::move(names), std::move(roles),
+        station,
         [this](const std::string& kind, const std::string& unit, const std::string& detail) {
           event(kind, unit, detail);
         });

@@ -22,25 +22,43 @@ bool isInspector(agent::Role role) {
 
 }  // namespace
 
-std::vector<uint8_t> highPriorityFeatures(const std::vector<std::string>& boxes,
-                                          const world::Scenario& scenario,
-                                          const std::string& source) {
-  if (boxes.empty()) return {};
-  const std::string key = "[features] priority_boxes";
-  std::vector<uint8_t> high(scenario.interestPoints.size(), 0);
-  for (const std::string& name : boxes) {
+namespace {
+
+const char* const kPriorityKey = "[features] priority_boxes";
+
+}  // namespace
+
+std::vector<uint8_t> priorityBoxFlags(const std::vector<std::string>& names,
+                                      const world::Scenario& scenario, const std::string& source) {
+  std::vector<uint8_t> urgent(scenario.boxes.size(), 0);
+  for (const std::string& name : names) {
     const auto box = std::find_if(scenario.boxes.begin(), scenario.boxes.end(),
                                   [&](const world::OrientedBox& b) { return b.name == name; });
     if (box == scenario.boxes.end()) {
       std::string known;
       for (const auto& b : scenario.boxes)
         known += (known.empty() ? "" : ", ") + b.name;
-      throw InputError(source, key, "no box '" + name + "' in the scenario (boxes: " + known + ")");
+      throw InputError(source, kPriorityKey,
+                       "no box '" + name + "' in the scenario (boxes: " + known + ")");
     }
+    urgent[static_cast<size_t>(box - scenario.boxes.begin())] = 1;
+  }
+  return urgent;
+}
+
+std::vector<uint8_t> highPriorityFeatures(const std::vector<uint8_t>& urgentBoxes,
+                                          const world::Scenario& scenario,
+                                          const std::string& source) {
+  if (std::find(urgentBoxes.begin(), urgentBoxes.end(), 1) == urgentBoxes.end()) return {};
+  std::vector<uint8_t> high(scenario.interestPoints.size(), 0);
+  for (size_t b = 0; b < urgentBoxes.size(); ++b) {
+    if (!urgentBoxes[b]) continue;
+    const auto& box = scenario.boxes[b];
     size_t inside = 0;
     for (size_t f = 0; f < high.size(); ++f)
-      if (box->contains(scenario.interestPoints[f].position)) high[f] = 1, ++inside;
-    if (inside == 0) throw InputError(source, key, "box '" + name + "' holds no feature");
+      if (box.contains(scenario.interestPoints[f].position)) high[f] = 1, ++inside;
+    if (inside == 0)
+      throw InputError(source, kPriorityKey, "box '" + box.name + "' holds no feature");
   }
   return high;
 }

@@ -20,10 +20,14 @@
 
 namespace coinspect::sim {
 
-// Per feature of the scenario, 1 when it lies in one of the boxes named by [features]
-// priority_boxes (empty when none is named). Throws InputError naming the key for a name that is
-// not a box of the scenario, or a box that holds no feature.
-std::vector<uint8_t> highPriorityFeatures(const std::vector<std::string>& boxes,
+// Per box of the scenario, 1 when [features] priority_boxes names it. Throws InputError naming
+// the key for a name that is not a box of the scenario.
+std::vector<uint8_t> priorityBoxFlags(const std::vector<std::string>& names,
+                                      const world::Scenario& scenario, const std::string& source);
+
+// Per feature of the scenario, 1 when it lies in a box flagged urgent (priorityBoxFlags; empty
+// when none is). Throws InputError naming the key for an urgent box that holds no feature.
+std::vector<uint8_t> highPriorityFeatures(const std::vector<uint8_t>& urgentBoxes,
                                           const world::Scenario& scenario,
                                           const std::string& source);
 
