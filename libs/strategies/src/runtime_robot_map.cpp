@@ -39,18 +39,16 @@ namespace {
 
 constexpr double kGroundBand = 1.0;  // m above the ground where rays never clear (raysClear...)
 
-// raysClearAwayFromBoxes' rule, with its own copy of the zone (the map moves with its owner):
-// rays clear outside the zone where unknown blocks and above the ground band.
+// raysClearAwayFromBoxes' rule, with its own copy of the grid's geometry and zone (the map
+// moves with its owner): rays clear outside the zone where unknown blocks and above the ground
+// band.
 struct RaysClearAway {
-  Vec3 origin;
-  double resolution;
-  mapping::Index3 size;
-  std::vector<uint8_t> zone;  // per grid cell, z then y then x
+  mapping::VoxelGrid grid;    // geometry only
+  std::vector<uint8_t> zone;  // per grid cell
   double floor;
   bool operator()(const Vec3& p) const {
-    const mapping::Index3 c = ((p - origin) / resolution).array().floor().cast<int>().matrix();
-    if (p.z() <= floor || (c.array() < 0).any() || (c.array() >= size.array()).any()) return false;
-    return !zone[(static_cast<size_t>(c.z()) * size.y() + c.y()) * size.x() + c.x()];
+    const mapping::Index3 cell = grid.cellOf(p);
+    return p.z() > floor && grid.contains(cell) && !zone[grid.linear(cell)];
   }
 };
 
@@ -105,8 +103,8 @@ RobotMap::RobotMap(const RobotMapOptions& options, const std::vector<BoxView>& b
           }
     }
     if (options.raysClearAwayFromBoxes)
-      map_.setRaysClearAt(
-          RaysClearAway{grid_.origin(), res, size, blockUnknown_, groundZ + kGroundBand});
+      map_.setRaysClearAt(RaysClearAway{mapping::VoxelGrid(grid_.origin(), res, size),
+                                        blockUnknown_, groundZ + kGroundBand});
   }
   rebuild();
 }

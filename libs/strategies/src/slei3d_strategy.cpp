@@ -148,6 +148,7 @@ double Slei3dStrategy::boxExploredFraction(int32_t box) const {
 }
 
 void Slei3dStrategy::learnGround(const agent::KeyFrame& frame) {
+  if (staticStation()) return;  // it never drives
   // A station that learns a wall plans its way again.
   if (blockGroundObstacles(*ground_, frame.points, groundZ_, unit_.radius + kGroundClearance) > 0)
     driveGoal_ = Vec3::Constant(1e300);

@@ -52,10 +52,11 @@ Vec3 boxCorner(const std::vector<agent::BoxView>& boxes, size_t index, double of
 // where a UAV waits near a corner without crowding the structure or the station there.
 Vec3 awayFromBox(const agent::BoxView& box, const Vec3& corner, double distance, double z);
 
+inline constexpr double kGroundClearance = 0.5;  // m a station keeps beyond its radius
+
 // The ground a station of collision radius `radius` knows from the start: a grid over the boxes
 // and `also` with 15 m around, the boxes' footprints blocked (inflated by the radius and
 // kGroundClearance).
-inline constexpr double kGroundClearance = 0.5;  // m kept from an obstacle beyond the radius
 planning::GroundGrid stationGroundGrid(const std::vector<agent::BoxView>& boxes,
                                        const planning::Vec2& also, double radius);
 
