@@ -226,7 +226,14 @@ agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const Robo
   agent::AgentSetpoint out = setpoint;
   out.velocity = Vec3::Zero();
   out.acceleration = Vec3::Zero();
-  out.position = planning::segmentTraversable(grid, me, target, options) ? target : me;
+  // No clear way to back off: hold. In flight that is where the vehicle is; a unit already
+  // holding keeps its hold point. Holding "where the vehicle is" at every decision let a unit
+  // near a wall creep with its own drift for good: slei-c, scene seed 1, an inspector backing
+  // off from a teammate slid 3 m in 290 s into a structure.
+  if (planning::segmentTraversable(grid, me, target, options))
+    out.position = target;
+  else
+    out.position = phase_ == Phase::Flying ? me : setpoint.position;
   // The unit stays where it backed off to: flying back to the reference point it had brought the
   // two units together again (caric-baseline, generated mbs, seed 2). A flight plans again from
   // there.

@@ -267,5 +267,23 @@ TEST(Flight, HigherPriorityStopsShortOfALowerPriorityUnitInItsWayThenGoesAround)
   EXPECT_FALSE(units.flight.failed());
 }
 
+TEST(Flight, HoldsItsPointWhenItCannotBackOffFromAHigherPriorityNeighbour) {
+  // slei-c, scene seed 1: an inspector hovering within its clearance of a structure, a
+  // higher-priority teammate 2.5 m away. Backing off meant flying toward the structure, so it
+  // held "where it is" at every decision: each hold followed the vehicle's own drift, and it slid
+  // 3 m in 290 s until it hit the structure.
+  TwoUnits units({0, 19.5, 5}, 1);  // box face at y = 20.5: the unit, at y = 22, is too close
+  ASSERT_TRUE(units.flight.done());
+  const Vec3 hold = units.vehicle.view.odometry.position;
+  units.addOther(hold + Vec3(0, 3, 0));  // between minSeparation and separation, away from the box
+  const Vec3 drift(0, -0.005, -0.002);   // per decision, toward the box and down
+  for (int i = 0; i < 300; ++i) {
+    units.step();
+    units.vehicle.view.odometry.position += drift;
+  }
+  // A perfect vehicle sits where it was told to plus one decision's drift.
+  EXPECT_LT((units.vehicle.view.odometry.position - hold).norm(), drift.norm() + 1e-9);
+}
+
 }  // namespace
 }  // namespace coinspect::strategies::runtime
