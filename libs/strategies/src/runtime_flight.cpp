@@ -45,6 +45,12 @@ planning::PathSearchOptions Flight::searchOptions(const mapping::VoxelGrid& grid
   return out;
 }
 
+planning::PathSearchOptions Flight::ownSphereOptions(const mapping::VoxelGrid& grid) const {
+  auto out = searchOptions(grid);
+  out.clearance = options_.radius + 0.5 * grid.resolution() * std::sqrt(3.0);
+  return out;
+}
+
 size_t Flight::priorityOf(const std::string& name) const {
   const auto it = std::find(fleet_.begin(), fleet_.end(), name);
   return static_cast<size_t>(it - fleet_.begin());  // unknown names rank last
@@ -54,6 +60,9 @@ void Flight::goTo(const Vec3& goal, double speed) {
   if (route_.size() == 1 && (route_.front() - goal).norm() < 0.3 && speed == speed_ &&
       phase_ != Phase::Idle)
     return;
+  // Reached and still holding there: planning again would fly a path from the goal to itself
+  // (or fail to: a point is no path) at every decision of a caller that keeps asking.
+  if (phase_ == Phase::Idle && reachedGoal_ && (*reachedGoal_ - goal).norm() < 0.3) return;
   follow({goal}, speed);
 }
 
@@ -62,6 +71,7 @@ void Flight::follow(const std::vector<Vec3>& route, double speed) {
   // where it last stopped (which may be far behind: the controller would fly straight there).
   if (phase_ == Phase::Flying) hoverPoint_ = profile_.setpoint().position;
   route_ = route;
+  reachedGoal_.reset();
   speed_ = speed;
   failures_ = 0;
   lastAttempt_ = kNever;
@@ -70,6 +80,7 @@ void Flight::follow(const std::vector<Vec3>& route, double speed) {
 
 void Flight::hover() {
   route_.clear();
+  reachedGoal_.reset();
   if (phase_ == Phase::Takeoff) return;
   if (phase_ == Phase::Flying) hoverPoint_ = profile_.setpoint().position;
   phase_ = Phase::Idle;
@@ -221,7 +232,10 @@ agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const Robo
   }
   *holding = true;
   const auto& grid = map.grid();
-  const auto options = searchOptions(grid);
+  // The step away only has to clear the vehicle's own sphere, as a guarded setpoint: with the
+  // path search's margins a unit that hovered within them of a surface could never back off
+  // (slei-a, scene seed 2: two waiting inspectors held an explorer between them from 320 s on).
+  const auto options = ownSphereOptions(grid);
   const Vec3 target = me + 1.5 * escape.normalized();
   agent::AgentSetpoint out = setpoint;
   out.velocity = Vec3::Zero();
@@ -238,6 +252,7 @@ agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const Robo
   // two units together again (caric-baseline, generated mbs, seed 2). A flight plans again from
   // there.
   hoverPoint_ = out.position;
+  reachedGoal_.reset();
   if (phase_ == Phase::Flying) {
     dropReachedWaypoints();
     phase_ = route_.empty() ? Phase::Idle : Phase::Planning;
@@ -253,8 +268,7 @@ agent::AgentSetpoint Flight::bounded(const Vec3& position, const RobotMap& map,
   ++guardedSetpoints_;
   // The line only has to clear the vehicle's own sphere: the margins are for planned paths.
   const auto& grid = map.grid();
-  auto options = searchOptions(grid);
-  options.clearance = options_.radius + 0.5 * grid.resolution() * std::sqrt(3.0);
+  const auto options = ownSphereOptions(grid);
   const Vec3 target = position + offset.normalized() * options_.maxSetpointOffset;
   setpoint.velocity = Vec3::Zero();
   setpoint.acceleration = Vec3::Zero();
@@ -266,6 +280,7 @@ agent::AgentSetpoint Flight::bounded(const Vec3& position, const RobotMap& map,
   // and it would otherwise wait for the vehicle forever).
   setpoint.position = position;
   hoverPoint_ = position;
+  reachedGoal_.reset();
   if (phase_ == Phase::Flying) {
     dropReachedWaypoints();
     phase_ = route_.empty() ? Phase::Idle : Phase::Planning;
@@ -352,6 +367,7 @@ agent::AgentSetpoint Flight::step(const agent::AgentView& view, const RobotMap& 
       if (profile_.finished() && !holding) {
         phase_ = Phase::Idle;
         hoverPoint_ = profile_.points().back();
+        if (!route_.empty()) reachedGoal_ = route_.back();
         route_.clear();
       }
       return bounded(position, map, setpoint);

@@ -41,7 +41,6 @@ agent::AgentCommand Slei3dStrategy::decideInspector(const agent::AgentView& view
   const auto drop = [&] {
     tasks_.erase(tasks_.begin());
     atTaskSince_.reset();
-    taskFlown_ = false;
   };
   while (!tasks_.empty() && inspected_.count(tasks_.front().id))
     drop();
@@ -60,11 +59,9 @@ agent::AgentCommand Slei3dStrategy::decideInspector(const agent::AgentView& view
   std::optional<Vec3> aim;
   if (!tasks_.empty()) {
     const auto& task = tasks_.front();
-    // Sent once per task: a goTo to the pose it has reached plans the flight again, and with a
-    // goTo at every decision the flight was never done when asked, so the patience never ran
-    // (an inspector hovered 250 s at a pose whose feature it could not inspect).
-    if (!taskFlown_) flight_->goTo(task.viewPosition, options_.speed);
-    taskFlown_ = true;
+    // The flight ignores a goal it is flying to or holds at: done() stays true at the pose, and
+    // the patience runs from the first decision there.
+    flight_->goTo(task.viewPosition, options_.speed);
     if (flight_->done() && !atTaskSince_) atTaskSince_ = view.time;
     aim = task.position;
     command.activity = agent::Activity::Inspecting;

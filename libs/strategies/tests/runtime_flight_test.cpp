@@ -123,6 +123,34 @@ TEST(Flight, TakesOffThenGoesAroundAMappedWallKeepingItsClearance) {
   EXPECT_GE(nearest, flightOptions.radius + flightOptions.safetyMargin);
 }
 
+TEST(Flight, AGoalItHoldsAtIsNotFlownAgain) {
+  // Callers ask for their goal at every decision; at a reached goal that planned a path from
+  // the goal to itself each time, and done() was never true when they looked (an inspector's
+  // patience at a pose never started).
+  const auto map = wallMap();
+  Flight flight(FlightOptions{}, {"me"}, 0);
+  PerfectVehicle vehicle;
+  vehicle.view.name = "me";
+  vehicle.view.odometry.position = Vec3(-6, 0, 0.1);
+  const Vec3 goal(-6, -4, 5);
+  flight.goTo(goal, 2.0);
+  for (int i = 0; i < 400 && !flight.done(); ++i)
+    vehicle.apply(flight.step(vehicle.view, map), 0.1);
+  ASSERT_TRUE(flight.done());
+  const Vec3 there = vehicle.view.odometry.position;
+  for (int i = 0; i < 20; ++i) {
+    flight.goTo(goal + Vec3(0.1, 0, 0), 2.0);
+    EXPECT_TRUE(flight.done()) << i;
+    const auto setpoint = flight.step(vehicle.view, map);
+    EXPECT_EQ(setpoint.position, there) << i;
+    vehicle.apply(setpoint, 0.1);
+  }
+  // After a hover (or any other goal) the same goal is a new flight.
+  flight.hover();
+  flight.goTo(goal, 2.0);
+  EXPECT_FALSE(flight.done());
+}
+
 // Flies from (-6, 0, 0.1) toward `goal` for `steps` decisions of 0.1 s after taking off.
 void takeOffAndFly(Flight* flight, PerfectVehicle* vehicle, const RobotMap& map, const Vec3& goal,
                    int steps) {
@@ -265,6 +293,35 @@ TEST(Flight, HigherPriorityStopsShortOfALowerPriorityUnitInItsWayThenGoesAround)
   // It waited for the other to get out of the way before it went around.
   EXPECT_GE(stoppedFor, options.yieldPatience - 0.2);
   EXPECT_FALSE(units.flight.failed());
+}
+
+TEST(Flight, BacksOffFromAHigherPriorityNeighbourEvenWithinItsMarginsOfASurface) {
+  // slei-a, scene seed 2: two inspectors waiting within their path margins of mapped surface
+  // could not step away from an explorer (the step was checked with those margins from a cell
+  // that did not have them), and held it between them for 900 s.
+  TwoUnits units({20, 40, 6}, 1);
+  ASSERT_TRUE(units.flight.done());
+  const Vec3 here = units.vehicle.view.odometry.position;  // (0, 22, 5)
+  // A wall appears 1.2 m away: more than the unit's radius and half a cell, less than the
+  // clearance paths keep.
+  auto frame = std::make_shared<agent::KeyFrame>();
+  frame->producer = "scout";
+  frame->position = Vec3(-6, 22, 6);
+  for (double y = 14.0; y <= 30.0; y += 0.25)
+    for (double z = 0.0; z <= 12.0; z += 0.25)
+      frame->points.emplace_back(1.2f, static_cast<float>(y), static_cast<float>(z));
+  agent::AgentView scan;
+  scan.receivedKeyFrames.push_back(frame);
+  units.map.update(scan);
+  units.map.refresh(units.vehicle.view.time, true);
+  const auto& grid = units.map.grid();
+  ASSERT_LT(grid.clearance(grid.cellOf(here)), units.flight.requiredClearance(grid));
+  units.addOther(here + Vec3(0, 3, 0));  // higher priority, 3 m away along the wall
+  for (int i = 0; i < 30; ++i)
+    units.step();
+  EXPECT_GE((units.vehicle.view.odometry.position - here).norm(), 1.0);
+  EXPECT_GE((units.vehicle.view.odometry.position - (here + Vec3(0, 3, 0))).norm(),
+            TwoUnits::options().separation);
 }
 
 TEST(Flight, HoldsItsPointWhenItCannotBackOffFromAHigherPriorityNeighbour) {

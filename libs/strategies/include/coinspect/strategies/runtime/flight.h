@@ -26,6 +26,7 @@
 
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,7 +60,8 @@ class Flight {
   // `fleet`: every unit's name in fleet order (priorities); `self`: own fleet index.
   Flight(const FlightOptions& options, std::vector<std::string> fleet, size_t self);
 
-  // New goal (ignored when equal to the current one within 0.3 m and `speed` unchanged).
+  // New goal (ignored when equal to the current one within 0.3 m and `speed` unchanged, or to
+  // the goal reached last while the unit still holds there).
   void goTo(const Vec3& goal, double speed);
   // Visit every waypoint in order (a blocked one is moved to the nearest clear cell or skipped).
   void follow(const std::vector<Vec3>& route, double speed);
@@ -103,6 +105,9 @@ class Flight {
                                   agent::AgentSetpoint setpoint, bool* holding,
                                   std::vector<planning::AvoidSphere>* blockers = nullptr);
   size_t priorityOf(const std::string& name) const;
+  // searchOptions, clear of the vehicle's own sphere only: for short straight moves (a guarded
+  // setpoint, a step away from a neighbour), not for planned paths.
+  planning::PathSearchOptions ownSphereOptions(const mapping::VoxelGrid& grid) const;
   agent::AgentSetpoint bounded(const Vec3& position, const RobotMap& map,
                                agent::AgentSetpoint setpoint);
 
@@ -114,8 +119,9 @@ class Flight {
   Phase phase_ = Phase::Takeoff;
   bool started_ = false;
   Vec3 hoverPoint_ = Vec3::Zero();
-  std::vector<Vec3> route_;        // what is left to visit (the goal is a route of one)
-  std::vector<size_t> routeMark_;  // per profile vertex: route waypoints reached there
+  std::vector<Vec3> route_;          // what is left to visit (the goal is a route of one)
+  std::optional<Vec3> reachedGoal_;  // the route's last waypoint, while holding where it ended
+  std::vector<size_t> routeMark_;    // per profile vertex: route waypoints reached there
   double speed_ = 1.0;
   PathProfile profile_;
   uint64_t checkedGridVersion_ = 0;

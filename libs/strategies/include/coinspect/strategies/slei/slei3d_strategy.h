@@ -251,7 +251,6 @@ class Slei3dStrategy : public agent::Strategy {
   std::optional<Vec3> afterList_;  // where to go once the list is done (a new box)
   double retryWaitAt_ = 0.0;       // no way to the wait point found: try again then
   std::optional<double> atTaskSince_;
-  bool taskFlown_ = false;  // the flight to the first task's pose was asked for
   double lastStatus_ = -1e300;
 };
 
