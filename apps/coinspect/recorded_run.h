@@ -20,10 +20,10 @@ struct RecordedRun {
 };
 
 // Reads the header of `rawlog` and builds its scenario: from `scenarioSource` (a SOURCE as in
-// loadScenarioSource, with the header config's scenario_seed) when it is not empty, else from the
-// header config's [mission] scenario. Throws InputError when the rawlog has no coinspect header,
-// when the scenario cannot be built (the message suggests --scenario), or when its content hash
-// differs from the one recorded.
+// loadScenarioSource, with the header config's scenario_seed and fleet) when it is not empty, else
+// from the header config's [mission] scenario. Throws InputError when the rawlog has no coinspect
+// header, when the scenario cannot be built (the message suggests --scenario), or when its content
+// hash differs from the one recorded.
 RecordedRun openRecordedRun(const std::filesystem::path& rawlog, const std::string& scenarioSource);
 
 }  // namespace coinspect::app

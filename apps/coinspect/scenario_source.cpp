@@ -9,7 +9,8 @@
 
 namespace coinspect::app {
 
-world::Scenario loadScenarioSource(const std::string& source, uint64_t seed) {
+world::Scenario loadScenarioSource(const std::string& source, uint64_t seed,
+                                   const std::optional<world::SleiFleet>& fleet) {
   namespace fs = std::filesystem;
   const fs::path path(source);
   if (fs::is_directory(path)) {
@@ -20,7 +21,7 @@ world::Scenario loadScenarioSource(const std::string& source, uint64_t seed) {
   }
   if (path.extension() == ".ini") return world::loadScenario(path);
   // Not a file: a generator name (generateScenario lists the known names when it is not one).
-  return world::generateScenario(source, seed);
+  return world::generateScenario(source, seed, fleet);
 }
 
 }  // namespace coinspect::app

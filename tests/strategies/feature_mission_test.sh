@@ -1,7 +1,8 @@
 #!/bin/bash
 # End to end: a SLEI strategy flies a short feature mission; its report.json must show features
 # discovered, handed out and collected at the ground station above floors, at least one
-# station-explorer meeting, and no collision or death.
+# station-explorer meeting, and no collision or death; with several stations (gcs1, gcs2, ...),
+# each one collected features.
 # Usage: feature_mission_test.sh <coinspect> <config> <strategy> <min discovered> <min assigned>
 #        <min collected> <scratch dir> [more options of coinspect run...]
 set -euo pipefail
@@ -33,4 +34,8 @@ check features collected "$min_collected"
 check meetings gcs-explorer 1
 grep -qE '^punctuality .*on time [0-9]+, early [0-9]+, late [0-9]+, missed [0-9]+, rescheduled [0-9]+$' \
   "$out.log" || { echo "no punctuality line"; exit 1; }
+for tum in "$out"/gcs*.tum; do
+  station=$(basename "$tum" .tum)
+  grep -q ",feature-collected,$station," "$out/events.csv" || { echo "$station collected nothing"; exit 1; }
+done
 echo "ok: $strategy"

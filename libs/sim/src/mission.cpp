@@ -103,7 +103,7 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
     unit.log = sensing::ScoreLog(pointCount);
     unit.lastPosition = unit.spec->startPosition;
     if (unit.role == agent::Role::GroundStation) {
-      if (!station) station = i;
+      stations.push_back(i);
       unit.ground = std::make_unique<vehicle::GroundVehicle>(unit.spec->startPosition,
                                                              unit.spec->startYaw, config.gcsSpeed);
     } else {
@@ -166,7 +166,6 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
     features = std::make_unique<FeatureTracker>(
         config.features, scenario.interestPoints,
         highPriorityFeatures(urgent, scenario, config.source), std::move(names), std::move(roles),
-        station,
         [this](const std::string& kind, const std::string& unit, const std::string& detail) {
           event(kind, unit, detail);
         });
@@ -346,12 +345,15 @@ void Mission::Impl::updateTopology() {
   const auto alive = aliveFlags();
   network->setTopology(links, alive, now());
   if (features && features->exchange(now(), links, alive)) allCollected = true;
+  // A UAV's captures count once some live station hears it (several stations pool what they
+  // hear, as the features' collection does).
   size_t improved = 0;
-  if (station && units[*station].alive()) {
-    for (size_t i = 0; i < units.size(); ++i)
-      if (units[i].vehicle &&
-          links.linked(static_cast<uint32_t>(*station), static_cast<uint32_t>(i)))
-        improved += tally.merge(units[i].log, units[i].alive());
+  for (size_t i = 0; i < units.size(); ++i) {
+    if (!units[i].vehicle) continue;
+    const bool heard = std::any_of(stations.begin(), stations.end(), [&](size_t g) {
+      return units[g].alive() && links.linked(static_cast<uint32_t>(g), static_cast<uint32_t>(i));
+    });
+    if (heard) improved += tally.merge(units[i].log, units[i].alive());
   }
   if (recorder) recorder->topology(now(), links, tally, improved > 0);
   stages.topology += secondsSince(stageStart);

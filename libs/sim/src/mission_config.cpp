@@ -46,6 +46,26 @@ Objective parseObjective(const Config& config, const std::string& text) {
                    "'" + text + "' is not an objective (points or features)");
 }
 
+// `[mission] fleet = <stations> <explorers> <inspectors>`: a generated slei-* scene's fleet size.
+world::SleiFleet parseFleet(const Config& config, const std::string& text) {
+  const std::string key = "[mission] fleet";
+  const auto tokens = splitTokens(text);
+  std::vector<int> counts;
+  for (const auto& token : tokens) {
+    const auto value = parseInteger(token);
+    if (!value || *value < 0 || *value > 100000)
+      throw InputError(config.source(), key, "'" + token + "' is not a count");
+    counts.push_back(static_cast<int>(*value));
+  }
+  if (counts.size() != 3)
+    throw InputError(config.source(), key,
+                     "'" + text + "': give three counts, stations explorers inspectors");
+  const world::SleiFleet fleet{counts[0], counts[1], counts[2]};
+  const std::string problem = world::sleiFleetProblem(fleet);
+  if (!problem.empty()) throw InputError(config.source(), key, problem);
+  return fleet;
+}
+
 double angleDegrees(const Config& config, const std::string& key, double fallbackRadians) {
   const double degrees = config.getDouble("features", key, fallbackRadians * 180.0 / M_PI);
   if (!(degrees > 0.0 && degrees <= 180.0))
@@ -112,6 +132,7 @@ MissionConfig MissionConfig::read(const Config& config, std::optional<uint64_t> 
   out.scenario =
       !scenario.empty() && std::filesystem::exists(candidate) ? candidate.string() : scenario;
   out.scenarioSeed = nonNegative(config, m, "scenario_seed", config.getInt(m, "scenario_seed", 1));
+  if (config.has(m, "fleet")) out.fleet = parseFleet(config, config.getString(m, "fleet"));
   out.seed =
       seedOverride ? *seedOverride : nonNegative(config, m, "seed", config.getInt(m, "seed", 1));
   if (config.has(m, "budget"))
@@ -185,6 +206,9 @@ world::Scenario loadMissionScenario(const MissionConfig& config) {
   if (config.scenario.empty())
     throw InputError(config.source, "[mission] scenario", "missing: name a generator or a path");
   const fs::path path(config.scenario);
+  if (config.fleet && (fs::is_directory(path) || fs::is_regular_file(path)))
+    throw InputError(config.source, "[mission] fleet",
+                     "only for a generated slei-* scenario, not the files of " + config.scenario);
   if (fs::is_directory(path)) {
     if (fs::exists(path / "box_description.yaml")) return world::importCaricScenario(path);
     if (fs::exists(path / "scenario.ini")) return world::loadScenario(path / "scenario.ini");
@@ -192,7 +216,12 @@ world::Scenario loadMissionScenario(const MissionConfig& config) {
                      path.string() + " holds neither box_description.yaml nor scenario.ini");
   }
   if (fs::is_regular_file(path)) return world::loadScenario(path);
-  return world::generateScenario(config.scenario, config.scenarioSeed);
+  if (config.fleet)
+    for (const auto& generator : world::scenarioGenerators())
+      if (generator.name == config.scenario && generator.family != "slei")
+        throw InputError(config.source, "[mission] fleet",
+                         "only for a generated slei-* scenario, not " + config.scenario);
+  return world::generateScenario(config.scenario, config.scenarioSeed, config.fleet);
 }
 
 }  // namespace coinspect::sim

@@ -65,14 +65,12 @@ std::vector<uint8_t> highPriorityFeatures(const std::vector<uint8_t>& urgentBoxe
 
 FeatureTracker::FeatureTracker(const FeatureConfig& config, const world::InterestPointSet& features,
                                std::vector<uint8_t> highPriority, std::vector<std::string> names,
-                               std::vector<agent::Role> roles, std::optional<size_t> station,
-                               EventSink sink)
+                               std::vector<agent::Role> roles, EventSink sink)
     : config_(config),
       features_(features),
       highPriority_(std::move(highPriority)),
       names_(std::move(names)),
       roles_(std::move(roles)),
-      station_(station),
       sink_(std::move(sink)),
       carried_(names_.size(), features.size()),
       meetings_(names_.size(), config.meetingGap),
@@ -91,6 +89,8 @@ FeatureTracker::FeatureTracker(const FeatureConfig& config, const world::Interes
       counting_(names_.size(), 0),
       activitySeconds_(names_.size()) {
   promises_.resize(names_.size());
+  stations_ =
+      static_cast<size_t>(std::count(roles_.begin(), roles_.end(), agent::Role::GroundStation));
   for (size_t i = 0; i < names_.size(); ++i) {
     // Only inspectors keep a timer; the others get an empty one (no feature to index).
     timers_.emplace_back(isInspector(roles_[i]) ? features.size() : 0, config.inspectTime);
@@ -164,7 +164,7 @@ bool FeatureTracker::exchange(double time, const comms::LinkMatrix& links,
       ++meetingsOther_;
     sink_("meeting", names_[a], names_[b]);
   }
-  if (station_) {
+  if (stations_ > 0) {
     const double tolerance = config_.punctualityTolerance;
     for (size_t e = 0; e < promises_.size(); ++e) {
       if (!promises_[e] || !alive[e]) continue;
@@ -185,13 +185,15 @@ bool FeatureTracker::exchange(double time, const comms::LinkMatrix& links,
   }
   for (const auto& handover : carried_.exchange(links, alive)) {
     pendingReceived_[handover.unit].push_back(handover.item);
-    if (!station_ || handover.unit != *station_) continue;
+    // Several stations: a result counts once, when the first of them receives it.
+    if (roles_[handover.unit] != agent::Role::GroundStation ||
+        !std::isnan(collectedAt_[handover.item]))
+      continue;
     collectedAt_[handover.item] = time;
+    ++collected_;
     sink_("feature-collected", names_[handover.unit], featureDetail(handover.item));
   }
-  if (finishedAt_ || !station_ ||
-      carried_.heldCount(static_cast<uint32_t>(*station_)) < features_.size())
-    return false;
+  if (finishedAt_ || stations_ == 0 || collected_ < features_.size()) return false;
   finishedAt_ = time;
   return true;
 }

@@ -1,6 +1,6 @@
 // The feature side of a mission with objective = features (doc/features.md): explorers' detections,
 // inspectors' inspection timers, the results the robots carry and hand over at meetings, what the
-// ground station has collected, meetings, and the activity each unit reports.
+// ground stations have collected, meetings, and the activity each unit reports.
 #pragma once
 
 #include <functional>
@@ -36,10 +36,12 @@ class FeatureTracker {
   // kind, unit, detail (a mission event).
   using EventSink = std::function<void(const std::string&, const std::string&, const std::string&)>;
 
-  // highPriority: per feature, 1 when its detection reports it urgent (empty: none is).
+  // highPriority: per feature, 1 when its detection reports it urgent (empty: none is). The
+  // units of role GroundStation are the stations: a feature is collected when any of them
+  // receives its result (the paper's several GCS), the first time only.
   FeatureTracker(const FeatureConfig& config, const world::InterestPointSet& features,
                  std::vector<uint8_t> highPriority, std::vector<std::string> names,
-                 std::vector<agent::Role> roles, std::optional<size_t> station, EventSink sink);
+                 std::vector<agent::Role> roles, EventSink sink);
 
   // The mission clock starts: activity time counts from here.
   void start(double time);
@@ -48,8 +50,8 @@ class FeatureTracker {
               const world::RayCaster& caster);
   // An inspector's capture (scores of the points in its candidate radius).
   void capture(size_t unit, double time, const std::vector<sensing::PointScore>& scores);
-  // A topology update: meetings, then one store-and-forward hop. True when the station now holds
-  // every feature (the first time only).
+  // A topology update: meetings, then one store-and-forward hop. True when the stations now hold
+  // every feature between them (the first time only).
   bool exchange(double time, const comms::LinkMatrix& links, const std::vector<bool>& alive);
   // A dead unit's results are lost and its activity stops counting.
   void unitDied(size_t unit, double time);
@@ -84,7 +86,8 @@ class FeatureTracker {
   }
   std::vector<std::string> names_;
   std::vector<agent::Role> roles_;
-  std::optional<size_t> station_;
+  size_t stations_ = 0;   // units of role GroundStation
+  size_t collected_ = 0;  // features some station holds
   EventSink sink_;
   comms::CarriedData carried_;
   comms::MeetingCounter meetings_;

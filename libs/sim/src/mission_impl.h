@@ -78,12 +78,12 @@ struct Mission::Impl {
   std::vector<agent::BoxView> boxes;
   double budget = 0.0;
   double step = 0.0025;
-  long long controlPeriod = 20;   // ticks per controller tick (digest)
-  long long gimbalPeriod = 20;    // ticks, 20 Hz
-  long long monitorPeriod = 4;    // ticks, collisions and the clock rule (100 Hz)
-  long long topologyPeriod = 8;   // ticks, 50 Hz
-  std::optional<size_t> station;  // index of the ground station
-  long long featurePeriod = 40;   // ticks, explorers' feature detector (10 Hz)
+  long long controlPeriod = 20;  // ticks per controller tick (digest)
+  long long gimbalPeriod = 20;   // ticks, 20 Hz
+  long long monitorPeriod = 4;   // ticks, collisions and the clock rule (100 Hz)
+  long long topologyPeriod = 8;  // ticks, 50 Hz
+  std::vector<size_t> stations;  // indices of the ground stations, in fleet order
+  long long featurePeriod = 40;  // ticks, explorers' feature detector (10 Hz)
 
   // State.
   std::vector<UnitRuntime> units;
@@ -93,7 +93,7 @@ struct Mission::Impl {
   std::unique_ptr<comms::Network> network;
   std::unique_ptr<comms::KeyFrameExchange> exchange;
   std::unique_ptr<FeatureTracker> features;        // objective = features only
-  bool allCollected = false;                       // the station holds every feature
+  bool allCollected = false;                       // the stations hold every feature
   std::vector<size_t> faultUnits;                  // per fault
   std::vector<std::vector<size_t>> blackoutUnits;  // per blackout (empty: all links)
   std::vector<size_t> faultsApplied;               // 0/1 per fault

@@ -64,7 +64,7 @@ class Scripted final : public agent::Strategy {
       for (const auto& box : *view.boxes)
         seen_.urgentBoxes.push_back(box.highPriority);
     agent::AgentCommand command;
-    if (name_ == "gcs") return command;
+    if (name_.rfind("gcs", 0) == 0) return command;  // the stations stay where they are
     agent::AgentSetpoint setpoint;
     command.gimbal = agent::GimbalCommand::angles(0.0, 0.0);
     if (name_ == "e") {
@@ -216,6 +216,46 @@ TEST(FeatureMission, WithoutAMeetingNothingIsCollectedAndTheBudgetEndsIt) {
   EXPECT_TRUE(hasEvent(mission, "mission-end", "budget used"));
   EXPECT_EQ(f.units[mission.unitIndex("i")].held, 3u);
   EXPECT_TRUE(std::isnan(f.collectedAt[0]));
+}
+
+// Several stations (the paper's several GCS): a result counts when any station receives it.
+// Here the first station stands 20 m off, out of everyone's reach; a second one beside the
+// inspector's way back collects everything, and the mission ends.
+TEST(FeatureMission, AnyStationCollects) {
+  Seen seen;
+  const auto registry = scripted(12.0, seen);
+  auto scene = featureScene();
+  scene.fleet[0].startPosition = world::Vec3(-20, 0, 1);
+  scene.fleet.push_back(testing::unitAt("gcs2", world::UnitRole::GroundStation, {-3, 0, 1}));
+  Mission mission(scene, Config::fromText(kFeatureMission, "features.ini"), registry);
+  mission.run();
+  const auto f = mission.summary().features;
+  EXPECT_EQ(f.collected, 3u);
+  ASSERT_TRUE(f.finishTime);
+  EXPECT_TRUE(hasEvent(mission, "mission-end", "all features collected"));
+  EXPECT_EQ(f.units[mission.unitIndex("gcs")].held, 0u);
+  EXPECT_EQ(f.units[mission.unitIndex("gcs2")].held, 3u);
+}
+
+// Two stations that both receive the results count each feature once, at the first receipt
+// (the mission runs on to its budget so that both receive them).
+TEST(FeatureMission, AFeatureHeldByTwoStationsIsCollectedOnce) {
+  Seen seen;
+  const auto registry = scripted(12.0, seen);
+  auto scene = featureScene();
+  scene.fleet.push_back(testing::unitAt("gcs2", world::UnitRole::GroundStation, {-3, 0, 1}));
+  const auto config = Config::fromText(kFeatureMission + "[features]\nend_when_collected = false\n",
+                                       "features.ini");
+  Mission mission(scene, config, registry);
+  mission.run();
+  const auto f = mission.summary().features;
+  EXPECT_EQ(f.collected, 3u);
+  EXPECT_EQ(f.units[mission.unitIndex("gcs")].held, 3u);
+  EXPECT_EQ(f.units[mission.unitIndex("gcs2")].held, 3u);
+  const auto& events = mission.events();
+  EXPECT_EQ(std::count_if(events.begin(), events.end(),
+                          [](const MissionEvent& e) { return e.kind == "feature-collected"; }),
+            3);
 }
 
 TEST(FeatureMission, AnInspectionNeedsTheWholeInspectTimeInView) {

@@ -194,5 +194,28 @@ TEST(MissionModes, BadRunModeValuesNameTheKey) {
             RunMode::Lockstep);
 }
 
+// `[mission] fleet`: three counts for a generated slei-* scene, nothing else.
+TEST(MissionConfigFleet, ResizesAGeneratedSleiFleetAndNamesTheKeyOtherwise) {
+  const auto read = [](const std::string& mission) {
+    return MissionConfig::read(
+        Config::fromText("[mission]\n" + mission + "[strategy]\nname = x\n", "fleet.ini"));
+  };
+  const auto config = read("scenario = slei-b\nfleet = 2 1 3\n");
+  ASSERT_TRUE(config.fleet);
+  const auto scenario = loadMissionScenario(config);
+  size_t stations = 0;
+  for (const auto& unit : scenario.fleet)
+    stations += unit.role == world::UnitRole::GroundStation;
+  EXPECT_EQ(stations, 2u);
+  EXPECT_EQ(scenario.fleet.size(), 6u);
+  EXPECT_FALSE(read("scenario = slei-b\n").fleet);
+  for (const char* bad : {"fleet = 1 2\n", "fleet = 1 2 4 5\n", "fleet = 0 2 4\n",
+                          "fleet = 1 x 4\n", "fleet = 1 2 -4\n", "fleet = 1 2 4.5\n"})
+    EXPECT_MENTIONS(readError(bad), "[mission] fleet");
+  EXPECT_MENTIONS(coinspect::testing::messageOf(
+                      [&] { loadMissionScenario(read("scenario = hangar\nfleet = 1 2 4\n")); }),
+                  "[mission] fleet");
+}
+
 }  // namespace
 }  // namespace coinspect::sim

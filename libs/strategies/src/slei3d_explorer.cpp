@@ -584,10 +584,7 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
     goToStation(view, stationPlace);
   }
 
-  const auto station = std::find_if(unit_.fleet.begin(), unit_.fleet.end(), [](const auto& m) {
-    return m.role == agent::Role::GroundStation;
-  });
-  const auto stationIndex = static_cast<uint32_t>(station - unit_.fleet.begin());
+  const uint32_t stationIndex = subgroup->station;  // its own station (of several, maybe)
   std::optional<Vec3> aim;
   switch (phase_) {
     case ExplorerPhase::ToStation:
@@ -601,7 +598,7 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
       }
       if (flight_->failed() && view.time - lastApproach_ >= kApproachRetry)
         goToStation(view, stationPlace);
-      if (station != unit_.fleet.end() && neighbour(view, stationIndex)) {
+      if (neighbour(view, stationIndex)) {
         phase_ = ExplorerPhase::AtStation;
         if (view.time - lastSend_ >= kReportPeriod) {
           lastSend_ = view.time;

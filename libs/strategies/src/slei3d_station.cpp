@@ -129,7 +129,14 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
   agent::AgentCommand command;
   const Vec3 here = view.odometry.position;
   if (!plan_) {
-    plan_ = makeFleetPlan(unit_.fleet, boxes_, here, groundZ_, view.time, options_.plan);
+    // Its share of the fleet and boxes (all of them when it is the only station); the others'
+    // boxes are never its to hand out.
+    StationShare own;
+    for (auto& share : stationShares(unit_.fleet, boxes_))
+      if (share.station == unit_.self) own = std::move(share);
+    for (size_t b = 0; b < boxes_.size(); ++b)
+      if (!own.boxes[b]) boxTaken_[b] = 1;
+    plan_ = makeFleetPlan(own, boxes_, here, groundZ_, view.time, options_.plan);
     staticPlace_ = here;
     if (staticStation())
       for (auto& s : plan_->subgroups)
@@ -138,9 +145,9 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
       std::vector<int32_t> first;
       for (const auto& s : plan_->subgroups)
         first.push_back(s.box);
-      boxOrder_ = fixedBoxOrders(boxes_, first);
+      boxOrder_ = fixedBoxOrders(boxes_, first, boxTaken_);
     }
-    planBytes_ = encode(*plan_);
+    planBytes_ = {encode(*plan_)};
     for (const auto& s : plan_->subgroups) {
       if (s.box >= 0) boxTaken_[static_cast<size_t>(s.box)] = 1;
       if (s.box >= 0) schedule_.push_back({s.explorer, s.firstMeeting});

@@ -87,11 +87,13 @@ Vec3 Slei3dStrategy::firstWaitPoint(const Subgroup& subgroup, size_t k) const {
     // caric-team: every inspector waits around the relay (the first meeting place of every
     // subgroup), in link with the station, on a circle in the order of the fleet.
     size_t index = 0, count = 0;
-    for (const auto& s : plan_->subgroups)
+    for (const auto& s : plan_->subgroups) {
+      if (s.station != subgroup.station) continue;  // another station's relay
       for (const uint32_t unit : s.inspectors) {
         if (unit == subgroup.inspectors[k]) index = count;
         ++count;
       }
+    }
     const double angle = 2.0 * M_PI * static_cast<double>(index) / static_cast<double>(count);
     const Vec3& relay = subgroup.firstMeeting.place;
     return Vec3(relay.x() + kRelayCircle * std::cos(angle),
@@ -104,22 +106,33 @@ Vec3 Slei3dStrategy::firstWaitPoint(const Subgroup& subgroup, size_t k) const {
 }
 
 void Slei3dStrategy::readPlan(const agent::AgentView& view) {
-  if (plan_) return;
+  // A station makes its own part (decideStation); a UAV merges the parts of every station it
+  // hears of, each subgroup once, and floods each part on.
+  if (unit_.role == agent::Role::GroundStation) return;
   for (const auto& message : view.messages) {
     if (message.topic != kPlanTopic) continue;
-    if (auto plan = decodePlan(message.bytes)) {
-      plan_ = std::move(*plan);
-      planBytes_ = message.bytes;
-      return;
-    }
+    if (std::find(planBytes_.begin(), planBytes_.end(), message.bytes) != planBytes_.end())
+      continue;
+    const auto part = decodePlan(message.bytes);
+    if (!part) continue;
+    if (!plan_) plan_ = FleetPlan{};
+    bool fresh = false;
+    for (const auto& s : part->subgroups)
+      if (!subgroupOf(s.explorer)) {
+        plan_->subgroups.push_back(s);
+        fresh = true;
+      }
+    if (fresh) planBytes_.push_back(message.bytes);
   }
 }
 
 void Slei3dStrategy::floodPlan(const agent::AgentView& view, agent::AgentCommand& command) {
-  if (!plan_ || view.time > kFloodUntil || view.time - lastFlood_ < kFloodPeriod) return;
+  if (planBytes_.empty() || view.time > kFloodUntil || view.time - lastFlood_ < kFloodPeriod)
+    return;
   if (view.neighbours.empty()) return;
   lastFlood_ = view.time;
-  command.messages.push_back({"", kPlanTopic, planBytes_});
+  for (const auto& part : planBytes_)
+    command.messages.push_back({"", kPlanTopic, part});
 }
 
 bool Slei3dStrategy::neighbour(const agent::AgentView& view, uint32_t unit) const {

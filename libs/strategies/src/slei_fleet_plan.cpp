@@ -68,8 +68,11 @@ int32_t nearestFreeBox(const std::vector<agent::BoxView>& boxes,
 }
 
 std::vector<std::vector<int32_t>> fixedBoxOrders(const std::vector<agent::BoxView>& boxes,
-                                                 const std::vector<int32_t>& firstBoxes) {
+                                                 const std::vector<int32_t>& firstBoxes,
+                                                 const std::vector<uint8_t>& taken) {
   std::vector<uint8_t> assigned(boxes.size(), 0);
+  for (size_t i = 0; i < taken.size() && i < assigned.size(); ++i)
+    assigned[i] = taken[i];
   std::vector<int32_t> last = firstBoxes;
   for (const int32_t b : firstBoxes)
     if (b >= 0) assigned[static_cast<size_t>(b)] = 1;
@@ -135,20 +138,81 @@ Vec3 awayFromBox(const agent::BoxView& box, const Vec3& corner, double distance,
   return Vec3(corner.x(), corner.y(), z) + distance * out;
 }
 
-FleetPlan makeFleetPlan(const std::vector<agent::FleetMember>& fleet,
-                        const std::vector<agent::BoxView>& boxes, const Vec3& station,
-                        double groundZ, double now, const PlanOptions& options) {
-  std::vector<uint32_t> explorers, inspectors;
+std::vector<StationShare> stationShares(const std::vector<agent::FleetMember>& fleet,
+                                        const std::vector<agent::BoxView>& boxes) {
+  std::vector<uint32_t> stations, explorers, inspectors;
   for (size_t i = 0; i < fleet.size(); ++i) {
-    if (fleet[i].role == agent::Role::Explorer) explorers.push_back(static_cast<uint32_t>(i));
-    if (fleet[i].role == agent::Role::Photographer) inspectors.push_back(static_cast<uint32_t>(i));
+    const auto unit = static_cast<uint32_t>(i);
+    if (fleet[i].role == agent::Role::GroundStation) stations.push_back(unit);
+    if (fleet[i].role == agent::Role::Explorer) explorers.push_back(unit);
+    if (fleet[i].role == agent::Role::Photographer) inspectors.push_back(unit);
   }
+  std::vector<StationShare> shares(stations.size());
+  if (shares.empty()) return shares;
+  const auto explorerCounts = inspectorsPerSubgroup(explorers.size(), shares.size(), true);
+  std::vector<double> weights(explorerCounts.begin(), explorerCounts.end());
+  const auto inspectorCounts =
+      inspectorsPerSubgroup(inspectors.size(), shares.size(), false, weights);
+  size_t nextExplorer = 0, nextInspector = 0;
+  for (size_t k = 0; k < shares.size(); ++k) {
+    shares[k].station = stations[k];
+    shares[k].boxes.assign(boxes.size(), 0);
+    for (size_t j = 0; j < explorerCounts[k]; ++j)
+      shares[k].explorers.push_back(explorers[nextExplorer++]);
+    for (size_t j = 0; j < inspectorCounts[k]; ++j)
+      shares[k].inspectors.push_back(inspectors[nextInspector++]);
+  }
+  // The boxes in strips: ordered along the longer spread of their centres.
+  std::vector<size_t> order(boxes.size());
+  for (size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  double volume = 0.0;
+  for (const auto& box : boxes) {
+    low = low.cwiseMin(box.center);
+    high = high.cwiseMax(box.center);
+    volume += box.size.prod();
+  }
+  const int axis = boxes.empty() || high.x() - low.x() >= high.y() - low.y() ? 0 : 1;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return boxes[a].center[axis] < boxes[b].center[axis];
+  });
+  const double totalExplorers = static_cast<double>(std::max<size_t>(1, explorers.size()));
+  double before = 0.0;
+  for (const size_t b : order) {
+    const double middle = (before + 0.5 * boxes[b].size.prod()) / std::max(volume, 1e-12);
+    before += boxes[b].size.prod();
+    // The station whose share of the volume (its share of the explorers) holds the middle; the
+    // last one with explorers past the end (rounding).
+    double upTo = 0.0;
+    size_t owner = shares.size();
+    for (size_t k = 0; k < shares.size(); ++k) {
+      if (explorerCounts[k] == 0) continue;
+      owner = k;
+      upTo += static_cast<double>(explorerCounts[k]) / totalExplorers;
+      if (middle < upTo) break;
+    }
+    if (owner == shares.size()) owner = 0;  // no explorer at all: the first station's
+    shares[owner].boxes[b] = 1;
+  }
+  return shares;
+}
+
+FleetPlan makeFleetPlan(const StationShare& share, const std::vector<agent::BoxView>& boxes,
+                        const Vec3& station, double groundZ, double now,
+                        const PlanOptions& options) {
+  const auto& explorers = share.explorers;
+  const auto& inspectors = share.inspectors;
   FleetPlan plan;
-  std::vector<uint8_t> assigned(boxes.size(), 0);
+  // Another station's boxes are not this one's to hand out.
+  std::vector<uint8_t> assigned(boxes.size(), 1);
+  for (size_t i = 0; i < share.boxes.size() && i < assigned.size(); ++i)
+    assigned[i] = share.boxes[i] ? 0 : 1;
   Vec3 previousBox = station;
   for (const uint32_t explorer : explorers) {
     Subgroup s;
     s.explorer = explorer;
+    s.station = share.station;
     s.box = nearestFreeBox(boxes, assigned, previousBox);
     if (s.box >= 0) {
       assigned[static_cast<size_t>(s.box)] = 1;

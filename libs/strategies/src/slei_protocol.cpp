@@ -61,6 +61,7 @@ std::vector<uint8_t> encode(const FleetPlan& plan) {
     putIds(w, s.inspectors);
     w.i32(s.box);
     put(w, s.firstMeeting);
+    w.u32(s.station);
   }
   return w.take();
 }
@@ -69,10 +70,11 @@ std::optional<FleetPlan> decodePlan(const std::vector<uint8_t>& bytes) {
   WireReader r(bytes);
   FleetPlan plan;
   uint32_t n = 0;
-  bool ok = r.count(&n, 4 + 4 + 4 + 32);
+  bool ok = r.count(&n, 4 + 4 + 4 + 32 + 4);
   for (uint32_t i = 0; ok && i < n; ++i) {
     Subgroup s;
-    ok = r.u32(&s.explorer) && getIds(r, &s.inspectors) && r.i32(&s.box) && get(r, &s.firstMeeting);
+    ok = r.u32(&s.explorer) && getIds(r, &s.inspectors) && r.i32(&s.box) &&
+         get(r, &s.firstMeeting) && r.u32(&s.station);
     plan.subgroups.push_back(std::move(s));
   }
   return finished(r, ok, std::move(plan));

@@ -136,8 +136,11 @@ TEST(SleiFleetPlan, ExplorersTakeTheNearestBoxesInTurnAndMeetTheStationInAChain)
                                           makeBox({10, 0, 5}, {4, 4, 10}),
                                           makeBox({20, 0, 5}, {4, 4, 10})};
   PlanOptions options;
-  const auto plan = makeFleetPlan(fleet, boxes, Vec3(0, 0, 0.1), 0.0, 100.0, options);
+  const auto shares = stationShares(fleet, boxes);
+  ASSERT_EQ(shares.size(), 1u);  // one station: everything is its
+  const auto plan = makeFleetPlan(shares[0], boxes, Vec3(0, 0, 0.1), 0.0, 100.0, options);
   ASSERT_EQ(plan.subgroups.size(), 2u);
+  EXPECT_EQ(plan.subgroups[0].station, 0u);
   EXPECT_EQ(plan.subgroups[0].explorer, 1u);
   EXPECT_EQ(plan.subgroups[0].box, 1);  // nearest the station
   EXPECT_EQ(plan.subgroups[1].explorer, 3u);
@@ -152,6 +155,51 @@ TEST(SleiFleetPlan, ExplorersTakeTheNearestBoxesInTurnAndMeetTheStationInAChain)
   const auto& second = plan.subgroups[1].firstMeeting;
   EXPECT_TRUE(second.place.isApprox(Vec3(16, -4, 0)));
   EXPECT_NEAR(second.time, first.time + 10.0 + 20.0, 1e-9);
+}
+
+// Several stations (the paper's multi-GCS): explorers and inspectors in blocks in fleet order,
+// boxes in strips along x by volume, each station planning its own subgroups from its boxes.
+TEST(SleiFleetPlan, SeveralStationsShareExplorersInspectorsAndBoxStrips) {
+  std::vector<agent::FleetMember> fleet{
+      {"gcs1", agent::Role::GroundStation}, {"gcs2", agent::Role::GroundStation},
+      {"e1", agent::Role::Explorer},        {"e2", agent::Role::Explorer},
+      {"e3", agent::Role::Explorer},        {"i1", agent::Role::Photographer},
+      {"i2", agent::Role::Photographer},    {"i3", agent::Role::Photographer},
+      {"i4", agent::Role::Photographer},    {"i5", agent::Role::Photographer},
+      {"i6", agent::Role::Photographer}};
+  // Along x (the longer spread): 0, 10, 20, 30, 40, the box at 30 twice the volume.
+  const std::vector<agent::BoxView> boxes{
+      makeBox({40, 0, 5}, {4, 4, 10}), makeBox({0, 2, 5}, {4, 4, 10}),
+      makeBox({30, -2, 5}, {4, 8, 10}), makeBox({10, 0, 5}, {4, 4, 10}),
+      makeBox({20, 0, 5}, {4, 4, 10})};
+  const auto shares = stationShares(fleet, boxes);
+  ASSERT_EQ(shares.size(), 2u);
+  EXPECT_EQ(shares[0].station, 0u);
+  EXPECT_EQ(shares[1].station, 1u);
+  EXPECT_EQ(shares[0].explorers, (std::vector<uint32_t>{2, 3}));  // the first gets one more
+  EXPECT_EQ(shares[1].explorers, (std::vector<uint32_t>{4}));
+  EXPECT_EQ(shares[0].inspectors, (std::vector<uint32_t>{5, 6, 7, 8}));  // 2/3 of 6
+  EXPECT_EQ(shares[1].inspectors, (std::vector<uint32_t>{9, 10}));
+  // Volumes 1, 1, 1, 2, 1 (of 6) in x order; the first station's share is 2/3, 4 of 6: the
+  // middles at 0.5, 1.5 and 2.5 fall in it, the double box's at 4 does not (a box is one
+  // station's: the boundary fell in it).
+  EXPECT_EQ(shares[0].boxes, (std::vector<uint8_t>{0, 1, 0, 1, 1}));
+  EXPECT_EQ(shares[1].boxes, (std::vector<uint8_t>{1, 0, 1, 0, 0}));
+  const auto second = makeFleetPlan(shares[1], boxes, Vec3(40, -20, 0.1), 0.0, 0.0, PlanOptions{});
+  ASSERT_EQ(second.subgroups.size(), 1u);
+  EXPECT_EQ(second.subgroups[0].explorer, 4u);
+  EXPECT_EQ(second.subgroups[0].station, 1u);
+  EXPECT_EQ(second.subgroups[0].box, 0);
+  EXPECT_EQ(second.subgroups[0].inspectors, (std::vector<uint32_t>{9, 10}));
+  // The first station's explorers take its boxes only, though the others are nearer to it.
+  const auto first = makeFleetPlan(shares[0], boxes, Vec3(45, 0, 0.1), 0.0, 0.0, PlanOptions{});
+  ASSERT_EQ(first.subgroups.size(), 2u);
+  EXPECT_EQ(first.subgroups[0].box, 4);
+  EXPECT_EQ(first.subgroups[1].box, 3);
+  // Fixed orders deal the station's own boxes only.
+  const auto orders = fixedBoxOrders(boxes, {4, 3}, {1, 0, 1, 0, 0});
+  EXPECT_EQ(orders[0], (std::vector<int32_t>{1}));
+  EXPECT_TRUE(orders[1].empty());
 }
 
 TEST(SleiFleetPlan, ALostSubgroupsBoxGoesToTheShortestOtherOrder) {

@@ -7,7 +7,7 @@ namespace {
 
 TEST(SleiProtocol, EveryMessageRoundTrips) {
   FleetPlan plan;
-  plan.subgroups.push_back({1, {2, 4}, 3, {Vec3(1, 2, 0), 81.5}});
+  plan.subgroups.push_back({1, {2, 4}, 3, {Vec3(1, 2, 0), 81.5}, 7});
   plan.subgroups.push_back({3, {}, -1, {Vec3::Zero(), 0.0}});
   const auto decodedPlan = decodePlan(encode(plan));
   ASSERT_TRUE(decodedPlan);
@@ -15,6 +15,7 @@ TEST(SleiProtocol, EveryMessageRoundTrips) {
   EXPECT_EQ(decodedPlan->subgroups[0].inspectors, (std::vector<uint32_t>{2, 4}));
   EXPECT_EQ(decodedPlan->subgroups[0].box, 3);
   EXPECT_EQ(decodedPlan->subgroups[0].firstMeeting.place, Vec3(1, 2, 0));
+  EXPECT_EQ(decodedPlan->subgroups[0].station, 7u);
   EXPECT_EQ(decodedPlan->subgroups[1].box, -1);
 
   const auto report = decodeReport(encode(Report{2, true, 75.25, 4}));

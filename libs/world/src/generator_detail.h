@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "coinspect/core/random.h"
+#include "coinspect/world/generators.h"
 #include "coinspect/world/scenario.h"
 
 namespace coinspect::world::detail {
@@ -163,9 +164,10 @@ Scenario generateHangar(uint64_t seed);
 Scenario generateCrane(uint64_t seed);
 Scenario generateBurjKhalifa(uint64_t seed);
 Scenario generateBurjAlArab(uint64_t seed);
-Scenario generateSleiA(uint64_t seed);
-Scenario generateSleiB(uint64_t seed);
-Scenario generateSleiC(uint64_t seed);
-Scenario generateSleiD(uint64_t seed);
+// `fleet`: the scene's own fleet when absent (generators.h).
+Scenario generateSleiA(uint64_t seed, const std::optional<SleiFleet>& fleet);
+Scenario generateSleiB(uint64_t seed, const std::optional<SleiFleet>& fleet);
+Scenario generateSleiC(uint64_t seed, const std::optional<SleiFleet>& fleet);
+Scenario generateSleiD(uint64_t seed, const std::optional<SleiFleet>& fleet);
 
 }  // namespace coinspect::world::detail

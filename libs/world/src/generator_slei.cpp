@@ -179,23 +179,22 @@ void addEnclosure(SceneBuilder& scene, double hx, double hy, double height, bool
   }
 }
 
-// The paper's fleet of a scene (its Table I and section VI): a ground station, `explorers` in a
-// row at the gate and `inspectors` in rows of up to 10 behind it, 3-4 m apart so that no two
-// start within each other's collision radius.
-struct SleiFleetSize {
-  int explorers = 2;
-  int inspectors = 4;
-};
-
-std::vector<UnitSpec> sleiFleet(const Vec2& gate, const SleiFleetSize& size) {
-  // The GCS is a ground vehicle: it starts on the ground like the others.
-  std::vector<UnitSpec> fleet{
-      makeUnit("gcs", UnitRole::GroundStation, Vec3(gate.x(), gate.y() - 3.0, 0.1), 2.0)};
+// The paper's fleet of a scene (its Table I and section VI), or another size (`[mission] fleet`):
+// the ground stations in a row 3 m behind the gate, the explorers in a row at the gate and the
+// inspectors in rows of up to 10 behind the stations, 3-4 m apart so that no two start within
+// each other's collision radius. A single station is "gcs", several are "gcs1", "gcs2", ...
+std::vector<UnitSpec> sleiFleet(const Vec2& gate, const SleiFleet& size) {
+  std::vector<UnitSpec> fleet;
+  for (int i = 0; i < size.stations; ++i)
+    // A GCS is a ground vehicle: it starts on the ground like the others.
+    fleet.push_back(makeUnit(
+        size.stations == 1 ? "gcs" : "gcs" + std::to_string(i + 1), UnitRole::GroundStation,
+        Vec3(gate.x() - 2.0 * (size.stations - 1) + 4.0 * i, gate.y() - 3.0, 0.1), 2.0));
   for (int i = 0; i < size.explorers; ++i)
     fleet.push_back(makeUnit("explorer" + std::to_string(i + 1), UnitRole::Explorer,
                              Vec3(gate.x() - 2.0 * (size.explorers - 1) + 4.0 * i, gate.y(), 0.1),
                              2.0));
-  const int perRow = std::min(size.inspectors, 10);
+  const int perRow = std::max(1, std::min(size.inspectors, 10));
   for (int i = 0; i < size.inspectors; ++i) {
     const int row = i / perRow, column = i % perRow;
     fleet.push_back(makeUnit(
@@ -215,7 +214,7 @@ std::vector<InterestPoint> features(const SceneBuilder& scene,
 
 Scenario finishSlei(const std::string& name, const std::string& description, SceneBuilder& scene,
                     std::vector<OrientedBox> boxes, const Vec2& gate, double budget, Rng& rng,
-                    const SleiFleetSize& fleetSize = {}) {
+                    const SleiFleet& fleetSize) {
   auto points = features(scene, boxes, rng);
   return assembleScenario(name, description, scene, std::move(boxes), std::move(points),
                           sleiFleet(gate, fleetSize), budget);
@@ -223,7 +222,7 @@ Scenario finishSlei(const std::string& name, const std::string& description, Sce
 
 }  // namespace
 
-Scenario generateSleiA(uint64_t seed) {
+Scenario generateSleiA(uint64_t seed, const std::optional<SleiFleet>& fleet) {
   Rng rng(seed);
   Rng layoutRng = rng.fork(1), pointRng = rng.fork(2);
   SceneBuilder scene;
@@ -248,10 +247,11 @@ Scenario generateSleiA(uint64_t seed) {
   return finishSlei("slei-a",
                     "SLEI3D scene A: walled cluster of 8 ancient structures, 60 x 50 x 9 m; "
                     "8 boxes, 150 features",
-                    scene, std::move(boxes), Vec2(0.0, -29.0), 1200.0, pointRng);
+                    scene, std::move(boxes), Vec2(0.0, -29.0), 1200.0, pointRng,
+                    fleet.value_or(SleiFleet{}));
 }
 
-Scenario generateSleiB(uint64_t seed) {
+Scenario generateSleiB(uint64_t seed, const std::optional<SleiFleet>& fleet) {
   Rng rng(seed);
   Rng pointRng = rng.fork(2);
   SceneBuilder scene;
@@ -319,10 +319,11 @@ Scenario generateSleiB(uint64_t seed) {
   return finishSlei("slei-b",
                     "SLEI3D scene B: one large gabled building with porch, chimney and window "
                     "frames, 18 x 20 x 15 m; 4 boxes, 150 features",
-                    scene, std::move(boxes), Vec2(0.0, -16.0), 1200.0, pointRng);
+                    scene, std::move(boxes), Vec2(0.0, -16.0), 1200.0, pointRng,
+                    fleet.value_or(SleiFleet{}));
 }
 
-Scenario generateSleiC(uint64_t seed) {
+Scenario generateSleiC(uint64_t seed, const std::optional<SleiFleet>& fleet) {
   Rng rng(seed);
   Rng layoutRng = rng.fork(1), pointRng = rng.fork(2);
   SceneBuilder scene;
@@ -399,10 +400,11 @@ Scenario generateSleiC(uint64_t seed) {
   return finishSlei("slei-c",
                     "SLEI3D scene C: 3 x 3 city blocks of varied buildings up to 30 m, "
                     "70 x 60 x 30 m; 9 boxes, 150 features; 4 explorers, 8 inspectors",
-                    scene, std::move(boxes), Vec2(0.0, -36.0), 3000.0, pointRng, {4, 8});
+                    scene, std::move(boxes), Vec2(0.0, -36.0), 3000.0, pointRng,
+                    fleet.value_or(SleiFleet{1, 4, 8}));
 }
 
-Scenario generateSleiD(uint64_t seed) {
+Scenario generateSleiD(uint64_t seed, const std::optional<SleiFleet>& fleet) {
   Rng rng(seed);
   Rng layoutRng = rng.fork(1), pointRng = rng.fork(2);
   SceneBuilder scene;
@@ -469,7 +471,8 @@ Scenario generateSleiD(uint64_t seed) {
                     "SLEI3D scene D: large walled ancient site with a 20 m stepped pyramid, "
                     "temples, stupas and an obelisk avenue, 120 x 160 x 20 m; 15 boxes, 150 "
                     "features; 8 explorers, 40 inspectors",
-                    scene, std::move(boxes), Vec2(0.0, -86.0), 3600.0, pointRng, {8, 40});
+                    scene, std::move(boxes), Vec2(0.0, -86.0), 3600.0, pointRng,
+                    fleet.value_or(SleiFleet{1, 8, 40}));
 }
 
 }  // namespace coinspect::world::detail

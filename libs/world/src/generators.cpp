@@ -10,7 +10,8 @@ namespace {
 
 struct Entry {
   GeneratorInfo info;
-  Scenario (*generate)(uint64_t seed);
+  Scenario (*generate)(uint64_t seed) = nullptr;  // caric
+  Scenario (*generateSlei)(uint64_t seed, const std::optional<SleiFleet>& fleet) = nullptr;
 };
 
 const std::vector<Entry>& entries() {
@@ -30,12 +31,16 @@ const std::vector<Entry>& entries() {
         "Sail-shaped tower on an island with helipad and mast, scale 0.4 (~128 m high)"},
        detail::generateBurjAlArab},
       {{"slei-a", "slei", "SLEI3D scene A: 8 ancient structures, 60 x 50 x 9 m, 150 features"},
+       nullptr,
        detail::generateSleiA},
       {{"slei-b", "slei", "SLEI3D scene B: one building, 18 x 20 x 15 m, 150 features"},
+       nullptr,
        detail::generateSleiB},
       {{"slei-c", "slei", "SLEI3D scene C: city blocks, 70 x 60 x 30 m, 150 features"},
+       nullptr,
        detail::generateSleiC},
       {{"slei-d", "slei", "SLEI3D scene D: large ancient site, 120 x 160 x 20 m, 150 features"},
+       nullptr,
        detail::generateSleiD},
   };
   return table;
@@ -53,9 +58,34 @@ const std::vector<GeneratorInfo>& scenarioGenerators() {
   return infos;
 }
 
-Scenario generateScenario(const std::string& name, uint64_t seed) {
-  for (const Entry& entry : entries())
-    if (entry.info.name == name) return entry.generate(seed);
+std::string sleiFleetProblem(const SleiFleet& fleet) {
+  const struct {
+    int value, low, high;
+    const char* what;
+  } counts[] = {{fleet.stations, 1, 20, "stations"},
+                {fleet.explorers, 1, 100, "explorers"},
+                {fleet.inspectors, 0, 400, "inspectors"}};
+  for (const auto& c : counts)
+    if (c.value < c.low || c.value > c.high)
+      return std::to_string(c.value) + " " + c.what + ": must be from " + std::to_string(c.low) +
+             " to " + std::to_string(c.high);
+  return "";
+}
+
+Scenario generateScenario(const std::string& name, uint64_t seed,
+                          const std::optional<SleiFleet>& fleet) {
+  for (const Entry& entry : entries()) {
+    if (entry.info.name != name) continue;
+    if (!entry.generateSlei) {
+      if (fleet) throw InputError("scenario", name, "a fleet size is for the slei-* scenes only");
+      return entry.generate(seed);
+    }
+    if (fleet) {
+      const std::string problem = sleiFleetProblem(*fleet);
+      if (!problem.empty()) throw InputError("scenario", name, "fleet: " + problem);
+    }
+    return entry.generateSlei(seed, fleet);
+  }
   std::string known;
   for (const Entry& entry : entries())
     known += (known.empty() ? "" : ", ") + entry.info.name;

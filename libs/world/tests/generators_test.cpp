@@ -96,6 +96,54 @@ TEST(Generators, UnknownNameThrowsListingTheKnownOnes) {
   }
 }
 
+// `[mission] fleet`: another fleet on the same scene (the paper's scale test flies 5 + 10 + 60 in
+// scene A). Stations are numbered when there are several; the scene and features stay.
+TEST(Generators, ASleiSceneTakesAnotherFleetSize) {
+  const Scenario own = generateScenario("slei-a", 3);
+  EXPECT_EQ(generateScenario("slei-a", 3, SleiFleet{1, 2, 4}).contentHash(), own.contentHash());
+  const Scenario big = generateScenario("slei-a", 3, SleiFleet{5, 10, 60});
+  std::map<UnitRole, int> count;
+  std::set<std::string> names;
+  for (const UnitSpec& unit : big.fleet) {
+    ++count[unit.role];
+    EXPECT_TRUE(names.insert(unit.name).second) << unit.name;
+  }
+  EXPECT_EQ(count[UnitRole::GroundStation], 5);
+  EXPECT_EQ(count[UnitRole::Explorer], 10);
+  EXPECT_EQ(count[UnitRole::Photographer], 60);
+  EXPECT_TRUE(names.count("gcs1") && names.count("gcs5") && !names.count("gcs"));
+  EXPECT_TRUE(names.count("explorer10") && names.count("inspector60"));
+  for (size_t i = 0; i < big.fleet.size(); ++i)
+    for (size_t j = i + 1; j < big.fleet.size(); ++j)
+      EXPECT_GT((big.fleet[i].startPosition - big.fleet[j].startPosition).norm(), 2.0)
+          << big.fleet[i].name << " " << big.fleet[j].name;
+  const RayCaster caster(big.meshes);
+  for (const UnitSpec& unit : big.fleet)
+    EXPECT_GT(caster.distanceToSurface(unit.startPosition, 5.0), 0.7) << unit.name;
+  EXPECT_EQ(big.interestPoints.size(), own.interestPoints.size());
+  EXPECT_EQ(big.meshes.size(), own.meshes.size());
+}
+
+TEST(Generators, AFleetSizeIsRefusedForCaricScenesAndOutOfRange) {
+  const auto refused = [](const std::string& name, const SleiFleet& fleet,
+                          const std::string& part) {
+    try {
+      generateScenario(name, 1, fleet);
+      ADD_FAILURE() << name << ": no exception";
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find(part), std::string::npos) << error.what();
+    }
+  };
+  refused("hangar", SleiFleet{}, "slei-* scenes only");
+  refused("slei-a", SleiFleet{0, 2, 4}, "stations");
+  refused("slei-a", SleiFleet{1, 0, 4}, "explorers");
+  refused("slei-a", SleiFleet{1, 2, -1}, "inspectors");
+  refused("slei-c", SleiFleet{21, 2, 4}, "stations");
+  refused("slei-c", SleiFleet{1, 101, 4}, "explorers");
+  refused("slei-c", SleiFleet{1, 2, 401}, "inspectors");
+  EXPECT_EQ(sleiFleetProblem(SleiFleet{20, 100, 400}), "");
+}
+
 class EachGenerator : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EachGenerator, PassesValidationWithModestMeshes) {

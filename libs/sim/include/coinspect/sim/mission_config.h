@@ -12,6 +12,7 @@
 #include "coinspect/sensing/feature_detection.h"
 #include "coinspect/sensing/inspection_scorer.h"
 #include "coinspect/sim/record_config.h"
+#include "coinspect/world/generators.h"
 #include "coinspect/world/scenario.h"
 
 namespace coinspect::sim {
@@ -58,6 +59,7 @@ struct MissionConfig {
   std::string source;    // the INI file, for error messages
   std::string scenario;  // generator name, scenario.ini or CARIC folder (resolved path)
   uint64_t scenarioSeed = 1;
+  std::optional<world::SleiFleet> fleet;  // replaces a generated slei-* scene's fleet
   uint64_t seed = 1;
   std::optional<double> budget;  // s; the scenario's when absent
   sensing::ScoringMode scoring = sensing::ScoringMode::Caric;

@@ -28,9 +28,11 @@ int32_t nearestFreeBox(const std::vector<agent::BoxView>& boxes,
 // SLEI-PRE's fixed box orders (the paper's baseline without rolling assignment): given each
 // subgroup's first box (-1: none), the other boxes are dealt in turns, each subgroup taking the
 // free box nearest its last one (nearestFreeBox), until none is left. Returns, per subgroup,
-// the boxes after its first, in the order it will explore them.
+// the boxes after its first, in the order it will explore them. `taken` (per box, or empty)
+// marks boxes that are not to be dealt (another station's).
 std::vector<std::vector<int32_t>> fixedBoxOrders(const std::vector<agent::BoxView>& boxes,
-                                                 const std::vector<int32_t>& firstBoxes);
+                                                 const std::vector<int32_t>& firstBoxes,
+                                                 const std::vector<uint8_t>& taken = {});
 
 // Failure recovery with fixed orders: the box of the lost subgroup `lost` goes to the end of the
 // shortest list of the others (ties to the lower index); nothing when there is no other.
@@ -68,6 +70,22 @@ size_t blockGroundObstacles(planning::GroundGrid& ground,
                             const std::vector<Eigen::Vector3f>& points, double groundZ,
                             double inflate);
 
+// What one ground station runs (the paper's several GCS: each with its explorers, in
+// parallel), the same for every robot since it depends on the fleet and the boxes only: the
+// explorers in contiguous blocks in fleet order, as even as they go (the first stations get one
+// more); the inspectors likewise, in proportion to the explorers; the boxes in strips along the
+// longer horizontal spread of their centres, ascending (the generated fleets stand their
+// stations in a row along x in fleet order), each station's strip of a volume in proportion to
+// its explorers: a box goes to the station in whose share the middle of its volume falls. One
+// station gets everything. In the order of the stations in the fleet.
+struct StationShare {
+  uint32_t station = 0;  // fleet index
+  std::vector<uint32_t> explorers, inspectors;
+  std::vector<uint8_t> boxes;  // per box: 1 when it is this station's
+};
+std::vector<StationShare> stationShares(const std::vector<agent::FleetMember>& fleet,
+                                        const std::vector<agent::BoxView>& boxes);
+
 struct PlanOptions {
   bool evenSplit = true;
   double cornerOffset = 2.0;       // m outside the box's bounds (boxCorner)
@@ -76,13 +94,14 @@ struct PlanOptions {
   double legBuffer = 20.0;  // s added per leg of the station's first round (the reference: 20)
 };
 
-// The station's first plan, made at `now` from where it stands: explorers in fleet order each
-// take the free box nearest the previous choice (the first: nearest the station), inspectors are
-// split in fleet order; each subgroup's first meeting is at the corner of its box nearest the
-// previous meeting (the station's own position first), at times chained as the station would
-// drive them (straight legs at stationSpeed + legBuffer, after firstMeetingLead).
-FleetPlan makeFleetPlan(const std::vector<agent::FleetMember>& fleet,
-                        const std::vector<agent::BoxView>& boxes, const Vec3& station,
-                        double groundZ, double now, const PlanOptions& options);
+// A station's first plan for its share, made at `now` from where it stands: its explorers in
+// fleet order each take the free box of its share nearest the previous choice (the first:
+// nearest the station), its inspectors are split in fleet order; each subgroup's first meeting
+// is at the corner of its box nearest the previous meeting (the station's own position first),
+// at times chained as the station would drive them (straight legs at stationSpeed + legBuffer,
+// after firstMeetingLead).
+FleetPlan makeFleetPlan(const StationShare& share, const std::vector<agent::BoxView>& boxes,
+                        const Vec3& station, double groundZ, double now,
+                        const PlanOptions& options);
 
 }  // namespace coinspect::strategies::slei

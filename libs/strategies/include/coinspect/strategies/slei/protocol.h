@@ -39,12 +39,14 @@ struct Meeting {
   double time = 0.0;
 };
 
-// The station's initial plan: one subgroup per explorer.
+// The station's initial plan: one subgroup per explorer. With several stations each one plans
+// its own subgroups (fleet_plan.h, stationShares) and the robots merge the parts they receive.
 struct Subgroup {
   uint32_t explorer = 0;
   std::vector<uint32_t> inspectors;
   int32_t box = -1;  // index into the mission's boxes; -1: none
   Meeting firstMeeting;
+  uint32_t station = 0;  // the ground station it meets (fleet index)
 };
 struct FleetPlan {
   std::vector<Subgroup> subgroups;

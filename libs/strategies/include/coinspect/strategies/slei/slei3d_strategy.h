@@ -1,7 +1,8 @@
 // `slei3d`: the SLEI3D method (Chen et al., IEEE T-ASE; ../shared/design/slei3d-reference.md)
 // for feature missions ([mission] objective = features, doc/features.md), one class for the
 // three roles (doc/strategies.md, "SLEI3D"):
-// - the station makes the first plan (subgroups, first boxes, first meetings) and floods it;
+// - the station makes the first plan (subgroups, first boxes, first meetings) and floods it
+//   (several stations: each its own share of explorers, inspectors and boxes, stationShares);
 //   it then drives from meeting to meeting; at each, the explorer reports its box and predicted
 //   time to finish (eq. 9) and gets its next meeting (a corner of its box), or a new box, the
 //   free one nearest its last (rolling assignment), when it reports its box finished;
@@ -145,8 +146,9 @@ class Slei3dStrategy : public agent::Strategy {
   std::unique_ptr<runtime::RobotMap> map_;
   std::unique_ptr<runtime::Flight> flight_;
   std::unique_ptr<coinspect_strategy::KeyFrameRelay> relay_;
+  // The plan: a station's own part; a UAV's, the parts it has heard of merged (one per station).
   std::optional<FleetPlan> plan_;
-  std::vector<uint8_t> planBytes_;
+  std::vector<std::vector<uint8_t>> planBytes_;  // the parts as received (flooded on)
   double lastFlood_ = -1e300;
   std::vector<agent::BoxView> boxes_;
 
