@@ -236,7 +236,30 @@ agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const Robo
   // path search's margins a unit that hovered within them of a surface could never back off
   // (slei-a, scene seed 2: two waiting inspectors held an explorer between them from 320 s on).
   const auto options = ownSphereOptions(grid);
-  const Vec3 target = me + 1.5 * escape.normalized();
+  // The step must not take it closer than minSeparation to any other unit it is not already
+  // that close to: in a crowd the way away from one neighbour led into another (75 robots on
+  // slei-a: two inspectors collided 9 s after take-off). Failing the step away, up, across it
+  // either way, or down.
+  const auto clearOfNeighbours = [&](const Vec3& target) {
+    const Vec3 step = target - me;
+    for (const auto& neighbour : view.neighbours) {
+      if (neighbour.role == agent::Role::GroundStation) continue;
+      const Vec3 other = neighbour.odometry.position;
+      const double t =
+          std::clamp((other - me).dot(step) / std::max(step.squaredNorm(), 1e-12), 0.0, 1.0);
+      const double nearest = (me + t * step - other).norm();
+      if (nearest < std::min((me - other).norm(), options_.minSeparation) - 1e-9) return false;
+    }
+    return true;
+  };
+  const Vec3 away = escape.normalized();
+  const Vec3 across = Vec3(-away.y(), away.x(), 0.0);
+  std::vector<Vec3> directions{away, (away + Vec3::UnitZ()).normalized(), Vec3::UnitZ()};
+  if (across.norm() > 1e-3) {
+    directions.push_back(across.normalized());
+    directions.push_back(-across.normalized());
+  }
+  directions.push_back(-Vec3::UnitZ());
   agent::AgentSetpoint out = setpoint;
   out.velocity = Vec3::Zero();
   out.acceleration = Vec3::Zero();
@@ -244,10 +267,14 @@ agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const Robo
   // holding keeps its hold point. Holding "where the vehicle is" at every decision let a unit
   // near a wall creep with its own drift for good: slei-c, scene seed 1, an inspector backing
   // off from a teammate slid 3 m in 290 s into a structure.
-  if (planning::segmentTraversable(grid, me, target, options))
-    out.position = target;
-  else
-    out.position = phase_ == Phase::Flying ? me : setpoint.position;
+  out.position = phase_ == Phase::Flying ? me : setpoint.position;
+  for (const Vec3& direction : directions) {
+    const Vec3 target = me + 1.5 * direction;
+    if (clearOfNeighbours(target) && planning::segmentTraversable(grid, me, target, options)) {
+      out.position = target;
+      break;
+    }
+  }
   // The unit stays where it backed off to: flying back to the reference point it had brought the
   // two units together again (caric-baseline, generated mbs, seed 2). A flight plans again from
   // there.

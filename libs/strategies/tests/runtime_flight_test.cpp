@@ -342,5 +342,28 @@ TEST(Flight, HoldsItsPointWhenItCannotBackOffFromAHigherPriorityNeighbour) {
   EXPECT_LT((units.vehicle.view.odometry.position - hold).norm(), drift.norm() + 1e-9);
 }
 
+TEST(Flight, AStepAwayFromOneNeighbourDoesNotTakeItIntoAnother) {
+  // 75 robots on slei-a (5 stations, 10 explorers, 60 inspectors 3 m apart): an inspector
+  // backing off from a higher-priority one stepped into a lower-priority one, and both died 9 s
+  // after take-off.
+  TwoUnits units({20, 40, 6}, 1);
+  ASSERT_TRUE(units.flight.done());
+  const Vec3 here = units.vehicle.view.odometry.position;
+  const Vec3 higher = here + Vec3(0, -3, 0), lower = here + Vec3(0, 2.6, 0);
+  units.addOther(higher);  // "first"
+  agent::NeighbourInfo third;
+  third.name = "third";  // not in the flight's fleet: the lowest priority
+  third.role = agent::Role::Photographer;
+  third.odometry.position = lower;
+  units.vehicle.view.neighbours.push_back(third);
+  const auto options = TwoUnits::options();
+  for (int i = 0; i < 30; ++i) {
+    units.step();
+    EXPECT_GE((units.vehicle.view.odometry.position - lower).norm(), options.minSeparation - 1e-9)
+        << i;
+  }
+  EXPECT_GE((units.vehicle.view.odometry.position - higher).norm(), options.separation);
+}
+
 }  // namespace
 }  // namespace coinspect::strategies::runtime
