@@ -54,13 +54,13 @@ void distanceTransform1d(const float* in, float* out, int n, std::vector<int>& v
 }  // namespace
 
 VoxelGrid::VoxelGrid(const Vec3& origin, double resolution, const Index3& size, CellState fill)
-    : origin_(origin), resolution_(resolution), size_(size) {
+    : frame_{origin, resolution, size} {
   COINSPECT_ASSERT(resolution > 0.0 && (size.array() >= 1).all());
   states_.assign(static_cast<size_t>(size.x()) * size.y() * size.z(), fill);
 }
 
-Index3 VoxelGrid::cellOf(const Vec3& point) const {
-  const Vec3 scaled = (point - origin_) / resolution_;
+Index3 GridFrame::cellOf(const Vec3& point) const {
+  const Vec3 scaled = (point - origin) / resolution;
   return Index3(static_cast<int>(std::floor(scaled.x())), static_cast<int>(std::floor(scaled.y())),
                 static_cast<int>(std::floor(scaled.z())));
 }
@@ -69,7 +69,7 @@ void VoxelGrid::computeClearance(double cap, bool unknownBlocks) {
   clearance_.assign(states_.size(), 0.0f);
   clearanceCap_ = cap;
   clearanceUnknownBlocks_ = unknownBlocks;
-  transformWindow(Index3::Zero(), size_ - Index3::Ones());
+  transformWindow(Index3::Zero(), frame_.size - Index3::Ones());
 }
 
 void VoxelGrid::updateClearance(const Index3& low, const Index3& high) {
@@ -78,11 +78,11 @@ void VoxelGrid::updateClearance(const Index3& low, const Index3& high) {
   // A cell's capped clearance depends only on the cells within the cap of it: the values that
   // can change are those within the cap of the changed cells.
   const Index3 reach = Index3::Constant(capCells());
-  transformWindow((low - reach).cwiseMax(0), (high + reach).cwiseMin(size_ - Index3::Ones()));
+  transformWindow((low - reach).cwiseMax(0), (high + reach).cwiseMin(frame_.size - Index3::Ones()));
 }
 
 int VoxelGrid::capCells() const {
-  return static_cast<int>(std::ceil(clearanceCap_ / resolution_)) + 1;
+  return static_cast<int>(std::ceil(clearanceCap_ / frame_.resolution)) + 1;
 }
 
 void VoxelGrid::transformWindow(const Index3& low, const Index3& high) {
@@ -92,7 +92,7 @@ void VoxelGrid::transformWindow(const Index3& low, const Index3& high) {
   // whole grid, and a window's values equal the whole grid's: exact squared cell distances.
   const Index3 reach = Index3::Constant(capCells());
   const Index3 from = (low - reach).cwiseMax(0);
-  const Index3 to = (high + reach).cwiseMin(size_ - Index3::Ones());
+  const Index3 to = (high + reach).cwiseMin(frame_.size - Index3::Ones());
   const int sx = to.x() - from.x() + 1, sy = to.y() - from.y() + 1, sz = to.z() - from.z() + 1;
   std::vector<float> squared(static_cast<size_t>(sx) * sy * sz);
   size_t i = 0;
@@ -128,7 +128,7 @@ void VoxelGrid::transformWindow(const Index3& low, const Index3& high) {
   pass(
       sz, sx * sy, [&](int l) { return static_cast<size_t>(l); }, sx * sy);
   const float capF = static_cast<float>(clearanceCap_);
-  const float res = static_cast<float>(resolution_);
+  const float res = static_cast<float>(frame_.resolution);
   for (int z = low.z(); z <= high.z(); ++z)
     for (int y = low.y(); y <= high.y(); ++y) {
       const size_t row = linear(Index3(low.x(), y, z));

@@ -39,16 +39,16 @@ namespace {
 
 constexpr double kGroundBand = 1.0;  // m above the ground where rays never clear (raysClear...)
 
-// raysClearAwayFromBoxes' rule, with its own copy of the grid's geometry and zone (the map
-// moves with its owner): rays clear outside the zone where unknown blocks and above the ground
-// band.
+// raysClearAwayFromBoxes' rule, with the grid's geometry and a share of its zone (the map moves
+// with its owner, so no reference to the RobotMap): rays clear outside the zone where unknown
+// blocks and above the ground band.
 struct RaysClearAway {
-  mapping::VoxelGrid grid;    // geometry only
-  std::vector<uint8_t> zone;  // per grid cell
+  mapping::GridFrame frame;
+  std::shared_ptr<const std::vector<uint8_t>> zone;  // per grid cell
   double floor;
   bool operator()(const Vec3& p) const {
-    const mapping::Index3 cell = grid.cellOf(p);
-    return p.z() > floor && grid.contains(cell) && !zone[grid.linear(cell)];
+    const mapping::Index3 cell = frame.cellOf(p);
+    return p.z() > floor && frame.contains(cell) && !(*zone)[frame.linear(cell)];
   }
 };
 
@@ -78,7 +78,8 @@ RobotMap::RobotMap(const RobotMapOptions& options, const std::vector<BoxView>& b
       ((region_.max - region_.min) / res).array().ceil().cast<int>().max(1).matrix();
   grid_ = mapping::VoxelGrid(region_.min, res, size);
   // The blocking zone is constant: computed once per cell centre.
-  blockUnknown_.assign(grid_.cellCount(), options.unknown == UnknownSpace::Blocked ? 1 : 0);
+  blockUnknown_ = std::make_shared<std::vector<uint8_t>>(
+      grid_.cellCount(), options.unknown == UnknownSpace::Blocked ? 1 : 0);
   if (options.unknown == UnknownSpace::BlockedNearBoxes) {
     std::vector<BoxView> columns;
     for (const auto& box : boxes)
@@ -97,14 +98,13 @@ RobotMap::RobotMap(const RobotMapOptions& options, const std::vector<BoxView>& b
         for (int y = low.y(); y <= high.y(); ++y)
           for (int x = low.x(); x <= high.x(); ++x) {
             const mapping::Index3 cell(x, y, z);
-            uint8_t& blocks = blockUnknown_[grid_.linear(cell)];
+            uint8_t& blocks = (*blockUnknown_)[grid_.linear(cell)];
             if (!blocks && distanceToBox(column, grid_.centre(cell)) <= options.boxMargin)
               blocks = 1;
           }
     }
     if (options.raysClearAwayFromBoxes)
-      map_.setRaysClearAt(RaysClearAway{mapping::VoxelGrid(grid_.origin(), res, size),
-                                        blockUnknown_, groundZ + kGroundBand});
+      map_.setRaysClearAt(RaysClearAway{grid_.frame(), blockUnknown_, groundZ + kGroundBand});
   }
   rebuild();
 }
@@ -181,7 +181,7 @@ void RobotMap::openColumn(const Vec3& bottom, double height, double radius) {
       for (int x = std::max(0, low.x()); x <= std::min(grid_.size().x() - 1, high.x()); ++x) {
         const mapping::Index3 cell(x, y, z);
         if ((grid_.centre(cell) - bottom).head<2>().norm() <= radius + 0.5 * res)
-          blockUnknown_[grid_.linear(cell)] = 0;
+          (*blockUnknown_)[grid_.linear(cell)] = 0;
       }
   builtRevision_ = ~uint64_t{0};  // rebuild at the next refresh
 }
@@ -215,7 +215,7 @@ void RobotMap::rebuild() {
       for (int x = 0; x < size.x(); ++x, ++i) {
         const mapping::Index3 cell(x, y, z);
         mapping::CellState state = snapshot.state(cell);
-        if (state == mapping::CellState::Unknown && !blockUnknown_[i])
+        if (state == mapping::CellState::Unknown && !(*blockUnknown_)[i])
           state = mapping::CellState::Free;
         if (state == grid_.state(cell)) continue;
         grid_.set(cell, state);

@@ -17,6 +17,25 @@ using Index3 = Eigen::Vector3i;
 
 enum class CellState : uint8_t { Unknown = 0, Free = 1, Occupied = 2 };
 
+// A grid's geometry without its cells: which cell holds a point, and the cells' order. Cheap to
+// copy, for whoever must index a grid's cells without holding the grid.
+struct GridFrame {
+  Vec3 origin = Vec3::Zero();  // the minimum corner of cell (0, 0, 0)
+  double resolution = 1.0;
+  Index3 size = Index3::Zero();
+
+  bool contains(const Index3& cell) const {
+    return (cell.array() >= 0).all() && (cell.array() < size.array()).all();
+  }
+  Index3 cellOf(const Vec3& point) const;  // may lie outside: check contains()
+  Vec3 centre(const Index3& cell) const {
+    return origin + (cell.cast<double>().array() + 0.5).matrix() * resolution;
+  }
+  size_t linear(const Index3& cell) const {
+    return (static_cast<size_t>(cell.z()) * size.y() + cell.y()) * size.x() + cell.x();
+  }
+};
+
 class VoxelGrid {
  public:
   VoxelGrid() = default;
@@ -24,21 +43,16 @@ class VoxelGrid {
   VoxelGrid(const Vec3& origin, double resolution, const Index3& size,
             CellState fill = CellState::Unknown);
 
-  const Vec3& origin() const { return origin_; }
-  double resolution() const { return resolution_; }
-  const Index3& size() const { return size_; }
+  const GridFrame& frame() const { return frame_; }
+  const Vec3& origin() const { return frame_.origin; }
+  double resolution() const { return frame_.resolution; }
+  const Index3& size() const { return frame_.size; }
   size_t cellCount() const { return states_.size(); }
 
-  bool contains(const Index3& cell) const {
-    return (cell.array() >= 0).all() && (cell.array() < size_.array()).all();
-  }
-  Index3 cellOf(const Vec3& point) const;  // may lie outside: check contains()
-  Vec3 centre(const Index3& cell) const {
-    return origin_ + (cell.cast<double>().array() + 0.5).matrix() * resolution_;
-  }
-  size_t linear(const Index3& cell) const {
-    return (static_cast<size_t>(cell.z()) * size_.y() + cell.y()) * size_.x() + cell.x();
-  }
+  bool contains(const Index3& cell) const { return frame_.contains(cell); }
+  Index3 cellOf(const Vec3& point) const { return frame_.cellOf(point); }
+  Vec3 centre(const Index3& cell) const { return frame_.centre(cell); }
+  size_t linear(const Index3& cell) const { return frame_.linear(cell); }
 
   // Cells outside the grid read as Unknown.
   CellState state(const Index3& cell) const {
@@ -62,9 +76,7 @@ class VoxelGrid {
   }
 
  private:
-  Vec3 origin_ = Vec3::Zero();
-  double resolution_ = 1.0;
-  Index3 size_ = Index3::Zero();
+  GridFrame frame_;
   std::vector<CellState> states_;
   std::vector<float> clearance_;
   double clearanceCap_ = 0.0;  // the arguments of the last computeClearance()

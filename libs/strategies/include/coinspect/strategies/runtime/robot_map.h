@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,11 @@ class RobotMap {
  public:
   // `groundZ`: the height robots start from (the region's floor).
   RobotMap(const RobotMapOptions& options, const std::vector<BoxView>& boxes, double groundZ);
+  // One per robot: a copy would share its zone of blocked unknown space with the original.
+  RobotMap(const RobotMap&) = delete;
+  RobotMap& operator=(const RobotMap&) = delete;
+  RobotMap(RobotMap&&) = default;
+  RobotMap& operator=(RobotMap&&) = default;
 
   // Inserts what the view brings: own sweeps or own key frames, and received key frames.
   void update(const agent::AgentView& view);
@@ -98,7 +104,9 @@ class RobotMap {
   Aabb region_;
   mapping::OccupancyMap map_;
   mapping::VoxelGrid grid_;
-  std::vector<uint8_t> blockUnknown_;  // per grid cell: unknown here stays blocked
+  // Per grid cell: unknown here stays blocked. Shared with the map's rays-clear rule
+  // (raysClearAwayFromBoxes), which must not keep a copy of its own per robot.
+  std::shared_ptr<std::vector<uint8_t>> blockUnknown_;
   uint64_t gridVersion_ = 0;
   uint64_t builtRevision_ = 0;
   double lastRebuild_ = -1e300;
