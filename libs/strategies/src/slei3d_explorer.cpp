@@ -83,15 +83,34 @@ void Slei3dStrategy::enterBox(const agent::AgentView& view, int32_t box) {
   }
   const Vec3 corner = boxCorner(boxes_, static_cast<size_t>(box), options_.plan.cornerOffset,
                                 groundZ_ + options_.exploreHeight, view.odometry.position);
+  boxFrom_ = view.odometry.position;
   phase_ = ExplorerPhase::ToBox;
   flight_->goTo(corner, options_.speed);
   // Every inspector of the subgroup waits off the new corner once its list is done; it learns
   // of it at its next orders (caric-team's inspectors keep waiting at the relay).
   if (options_.variant == SleiVariant::Team) return;
   for (size_t k = 0; k < inspectors_.size(); ++k)
-    inspectors_[k].waitAt =
-        awayFromBox(boxes_[static_cast<size_t>(box)], corner, 2.5 * static_cast<double>(k + 1),
-                    groundZ_ + options_.waitHeight);
+    inspectors_[k].waitAt = waitPointNear(box, boxFrom_, k);
+}
+
+void Slei3dStrategy::adoptInspectors(const agent::AgentView& view,
+                                     const std::vector<Adoption>& adopt) {
+  for (const auto& a : adopt) {
+    if (std::any_of(inspectors_.begin(), inspectors_.end(),
+                    [&](const InspectorModel& m) { return m.unit == a.inspector; }))
+      continue;  // a reply sent again
+    InspectorModel model;
+    model.unit = a.inspector;
+    model.position = a.place;
+    model.home = a.place;
+    model.since = view.time;
+    model.heard = view.time;
+    // It learns of its new wait point with the first orders (an announcement when there is
+    // nothing to hand out); caric-team's stay at the relay.
+    if (options_.variant != SleiVariant::Team && box_ >= 0)
+      model.waitAt = waitPointNear(box_, boxFrom_, inspectors_.size());
+    inspectors_.push_back(model);
+  }
 }
 
 void Slei3dStrategy::collectDetections(const agent::AgentView& view) {
@@ -528,6 +547,7 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
     }
     stationMeeting_ = subgroup->firstMeeting;
     enterBox(view, subgroup->box);
+    boxFrom_ = subgroup->firstMeeting.place;  // the first wait points' corner (firstWaitPoint)
     // They compute the first wait point from the plan themselves.
     for (size_t k = 0; k < inspectors_.size(); ++k) {
       inspectors_[k].waitAt.reset();
@@ -558,10 +578,22 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
       phase_ = box_ >= 0 ? ExplorerPhase::Exploring : ExplorerPhase::Done;
       lastPlan_ = -1e300;
     }
+    if (reply->dropInspectors) {
+      // Presumed lost by the station, which gave its inspectors to others: what it planned to
+      // hand them goes back to pending; what they hold, they keep.
+      for (const auto& handout : handouts_)
+        pending_.insert(pending_.end(), handout.orders.tasks.begin(), handout.orders.tasks.end());
+      handouts_.clear();
+      inspectors_.clear();
+    }
+    adoptInspectors(view, reply->adopt);
   }
 
   // Done early: catch the station at one of its stops rather than wait for the meeting.
-  const bool boxDone = box_ >= 0 && explorationFinished_ && pending_.empty() && handouts_.empty();
+  // Without inspectors (none in its share, or given to others while it was presumed lost) its
+  // features cannot be handed out: they do not hold the box.
+  const bool nothingToHand = pending_.empty() || inspectors_.empty();
+  const bool boxDone = box_ >= 0 && explorationFinished_ && nothingToHand && handouts_.empty();
   if (boxDone && (phase_ == ExplorerPhase::Exploring || phase_ == ExplorerPhase::Done) &&
       !earlyPlace_ && !earlyTried_) {
     earlyTried_ = true;  // once per reply: the schedule it knows grows stale
@@ -607,7 +639,7 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
           // explore-then-inspect moves on with its features still pending.
           report.boxFinished =
               box_ < 0 || (explorationFinished_ &&
-                           (pending_.empty() || options_.variant == SleiVariant::ExploreFirst));
+                           (nothingToHand || options_.variant == SleiVariant::ExploreFirst));
           report.remaining = predictRemaining(view);
           report.meetingNumber = meetingNumber_;
           send(command, stationIndex, kReportTopic, encode(report));

@@ -22,13 +22,23 @@ agent::AgentCommand Slei3dStrategy::decideInspector(const agent::AgentView& view
         std::find(ids.begin(), ids.end(), static_cast<uint32_t>(unit_.self)) - ids.begin());
     waitAt_ = firstWaitPoint(*subgroup, k);
   }
-  const uint32_t explorer = subgroup->explorer;
+  if (!myExplorer_) myExplorer_ = subgroup->explorer;
   for (const uint32_t f : view.inspectedFeatures)
     inspected_.insert(f);
   for (const auto& message : view.messages) {
-    if (message.topic != kOrdersTopic || message.from != names_[explorer]) continue;
+    if (message.topic != kOrdersTopic) continue;
     const auto orders = decodeOrders(message.bytes);
-    if (!orders || orders->sequence <= lastOrders_) continue;
+    const auto from = std::find(names_.begin(), names_.end(), message.from);
+    if (!orders || from == names_.end()) continue;
+    // Orders from another explorer: its own was lost and the station gave it to this one
+    // (adoption), which numbers its orders afresh.
+    const auto sender = static_cast<uint32_t>(from - names_.begin());
+    if (sender != *myExplorer_) {
+      if (unit_.fleet[sender].role != agent::Role::Explorer) continue;
+      myExplorer_ = sender;
+      lastOrders_ = 0;
+    }
+    if (orders->sequence <= lastOrders_) continue;
     lastOrders_ = orders->sequence;
     for (const auto& task : orders->tasks)
       if (!inspected_.count(task.id)) tasks_.push_back(task);
@@ -76,6 +86,7 @@ agent::AgentCommand Slei3dStrategy::decideInspector(const agent::AgentView& view
     command.activity = agent::Activity::Waiting;
   }
 
+  const uint32_t explorer = *myExplorer_;
   if (neighbour(view, explorer) && view.time - lastStatus_ >= kStatusPeriod) {
     lastStatus_ = view.time;
     Status status;

@@ -59,6 +59,11 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
     }
     Reply reply;
     reply.meetingNumber = report->meetingNumber;
+    // Presumed lost, it turns up again: its inspectors went to others, and it starts afresh.
+    if (lost_.erase(explorer) > 0) {
+      reply.dropInspectors = true;
+      members_[explorer].clear();
+    }
     reply.box = report->box;
     double lead = std::clamp(report->remaining, kMinRemaining,
                              std::max(kMinRemaining, options_.maxMeetingLead));
@@ -93,6 +98,25 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
       if (staticStation()) place = staticPlace_, lead = options_.fixInterval;
       reply.next = {place, view.time + lead};
     }
+    // Its inspectors wait off the new box's corner nearest where it came from (here, within a
+    // link of it); a lost explorer's inspectors go to the next explorer with a box that reports.
+    if (reply.box >= 0 && reply.box != report->box && options_.variant != SleiVariant::Team) {
+      enteredFrom_[explorer] = here;
+      auto& members = members_[explorer];
+      for (size_t k = 0; k < members.size(); ++k)
+        members[k].place = waitPointNear(reply.box, here, k);
+    }
+    if (reply.box >= 0 && !orphans_.empty() && members_.count(explorer)) {
+      auto& members = members_[explorer];
+      for (const auto& orphan : orphans_) {
+        reply.adopt.push_back(orphan);
+        members.push_back({orphan.inspector,
+                           options_.variant == SleiVariant::Team
+                               ? orphan.place
+                               : waitPointNear(reply.box, enteredFrom_[explorer], members.size())});
+      }
+      orphans_.clear();
+    }
     schedule_.erase(std::remove_if(schedule_.begin(), schedule_.end(),
                                    [&](const StationMeeting& m) { return m.explorer == explorer; }),
                     schedule_.end());
@@ -103,6 +127,15 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
     answered_[explorer] = reply;
     send(command, explorer, kReplyTopic, encode(reply));
   }
+}
+
+void Slei3dStrategy::orphanInspectors(uint32_t explorer) {
+  const auto members = members_.find(explorer);
+  if (members == members_.end()) return;
+  for (const auto& m : members->second)
+    orphans_.push_back({m.inspector, m.place});
+  members_.erase(members);
+  lost_.insert(explorer);
 }
 
 void Slei3dStrategy::releaseBox(uint32_t explorer) {
@@ -149,6 +182,12 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
     }
     planBytes_ = {encode(*plan_)};
     for (const auto& s : plan_->subgroups) {
+      enteredFrom_[s.explorer] = s.firstMeeting.place;
+      auto& members = members_[s.explorer];
+      for (size_t k = 0; k < s.inspectors.size(); ++k)
+        members.push_back({s.inspectors[k], s.box >= 0 ? firstWaitPoint(s, k) : here});
+    }
+    for (const auto& s : plan_->subgroups) {
       if (s.box >= 0) boxTaken_[static_cast<size_t>(s.box)] = 1;
       if (s.box >= 0) schedule_.push_back({s.explorer, s.firstMeeting});
     }
@@ -166,6 +205,7 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
   const auto& next = schedule_.front();
   if (view.time > next.meeting.time + kPresumedLost * options_.meetingGrace) {
     releaseBox(next.explorer);
+    orphanInspectors(next.explorer);
     schedule_.erase(schedule_.begin());
     orderSchedule(view);
     return command;

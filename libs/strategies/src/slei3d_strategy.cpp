@@ -99,10 +99,14 @@ Vec3 Slei3dStrategy::firstWaitPoint(const Subgroup& subgroup, size_t k) const {
     return Vec3(relay.x() + kRelayCircle * std::cos(angle),
                 relay.y() + kRelayCircle * std::sin(angle), groundZ_ + options_.meetHeight);
   }
-  const auto& box = boxes_[static_cast<size_t>(subgroup.box)];
-  const Vec3 corner = boxCorner(boxes_, static_cast<size_t>(subgroup.box),
-                                options_.plan.cornerOffset, 0.0, subgroup.firstMeeting.place);
-  return awayFromBox(box, corner, 2.5 * static_cast<double>(k + 1), groundZ_ + options_.waitHeight);
+  return waitPointNear(subgroup.box, subgroup.firstMeeting.place, k);
+}
+
+Vec3 Slei3dStrategy::waitPointNear(int32_t box, const Vec3& from, size_t k) const {
+  const auto index = static_cast<size_t>(box);
+  const Vec3 corner = boxCorner(boxes_, index, options_.plan.cornerOffset, 0.0, from);
+  return awayFromBox(boxes_[index], corner, 2.5 * static_cast<double>(k + 1),
+                     groundZ_ + options_.waitHeight);
 }
 
 void Slei3dStrategy::readPlan(const agent::AgentView& view) {

@@ -107,6 +107,12 @@ std::vector<uint8_t> encode(const Reply& reply) {
   w.u32(static_cast<uint32_t>(reply.stops.size()));
   for (const auto& stop : reply.stops)
     put(w, stop);
+  w.u32(static_cast<uint32_t>(reply.adopt.size()));
+  for (const auto& a : reply.adopt) {
+    w.u32(a.inspector);
+    w.vec3(a.place);
+  }
+  w.u8(reply.dropInspectors ? 1 : 0);
   return w.take();
 }
 
@@ -119,6 +125,13 @@ std::optional<Reply> decodeReply(const std::vector<uint8_t>& bytes) {
   reply.stops.resize(ok ? n : 0);
   for (uint32_t i = 0; ok && i < n; ++i)
     ok = get(r, &reply.stops[i]);
+  ok = ok && r.count(&n, 4 + 24);
+  reply.adopt.resize(ok ? n : 0);
+  for (uint32_t i = 0; ok && i < n; ++i)
+    ok = r.u32(&reply.adopt[i].inspector) && r.vec3(&reply.adopt[i].place);
+  uint8_t drop = 0;
+  ok = ok && r.u8(&drop) && drop <= 1;
+  reply.dropInspectors = drop == 1;
   return finished(r, ok, std::move(reply));
 }
 

@@ -25,16 +25,31 @@ TEST(SleiProtocol, EveryMessageRoundTrips) {
   EXPECT_EQ(report->remaining, 75.25);
   EXPECT_EQ(report->meetingNumber, 4u);
 
-  const auto reply = decodeReply(encode(
-      Reply{4, 5, {Vec3(3, 4, 5), 200.0}, {{Vec3(1, 1, 0), 150.0}, {Vec3(3, 4, 5), 200.0}}}));
+  const auto reply = decodeReply(encode(Reply{4,
+                                              5,
+                                              {Vec3(3, 4, 5), 200.0},
+                                              {{Vec3(1, 1, 0), 150.0}, {Vec3(3, 4, 5), 200.0}},
+                                              {{6, Vec3(7, 8, 9)}},
+                                              true}));
   ASSERT_TRUE(reply);
+  EXPECT_TRUE(reply->dropInspectors);
+  ASSERT_EQ(reply->adopt.size(), 1u);
+  EXPECT_EQ(reply->adopt[0].inspector, 6u);
+  EXPECT_EQ(reply->adopt[0].place, Vec3(7, 8, 9));
   EXPECT_EQ(reply->box, 5);
   EXPECT_EQ(reply->next.time, 200.0);
   ASSERT_EQ(reply->stops.size(), 2u);
   EXPECT_EQ(reply->stops[0].place, Vec3(1, 1, 0));
   EXPECT_EQ(reply->stops[1].time, 200.0);
-  auto replyBytes = encode(Reply{4, 5, {Vec3(3, 4, 5), 200.0}, {{Vec3(1, 1, 0), 150.0}}});
-  replyBytes.resize(replyBytes.size() - 8);  // a stop cut short
+  auto replyBytes =
+      encode(Reply{4, 5, {Vec3(3, 4, 5), 200.0}, {{Vec3(1, 1, 0), 150.0}}, {}, false});
+  replyBytes.resize(replyBytes.size() - 1 - 4 - 8);  // no flag, no adoptions, a stop cut short
+  EXPECT_FALSE(decodeReply(replyBytes));
+  replyBytes = encode(Reply{4, 5, {Vec3(3, 4, 5), 200.0}, {}, {{6, Vec3(7, 8, 9)}}, false});
+  replyBytes.resize(replyBytes.size() - 1 - 8);  // an adoption cut short
+  EXPECT_FALSE(decodeReply(replyBytes));
+  replyBytes = encode(Reply{4, 5, {Vec3(3, 4, 5), 200.0}, {}, {}, false});
+  replyBytes.back() = 2;  // not a flag
   EXPECT_FALSE(decodeReply(replyBytes));
 
   Orders orders;

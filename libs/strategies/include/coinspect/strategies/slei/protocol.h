@@ -60,6 +60,12 @@ struct Report {
   uint32_t meetingNumber = 0;  // which meeting this is (the station answers each one once)
 };
 
+// An inspector whose explorer is presumed lost, and where it should be waiting.
+struct Adoption {
+  uint32_t inspector = 0;
+  Vec3 place = Vec3::Zero();
+};
+
 // The station's answer: the box to work on (the same one, a new one, or -1: none left) and the
 // next meeting.
 struct Reply {
@@ -70,6 +76,11 @@ struct Reply {
   // explorer done early can catch the station at an earlier one (the station answers a report
   // whenever they are linked).
   std::vector<Meeting> stops;
+  // Inspectors of a lost explorer to take into this explorer's subgroup, each with where it is
+  // expected to wait (the station's prediction); `place` is the inspector's wait point.
+  std::vector<Adoption> adopt;
+  // The explorer had been presumed lost and its inspectors given to others: it forgets them.
+  bool dropInspectors = false;
 };
 
 // An explorer's orders to one of its inspectors: features appended to its list in order, and

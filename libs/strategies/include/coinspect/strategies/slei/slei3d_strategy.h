@@ -95,6 +95,9 @@ class Slei3dStrategy : public agent::Strategy {
   // first box where the station first meets the explorer, 2.5 m apart, away from the box
   // (caric-team: around the relay).
   Vec3 firstWaitPoint(const Subgroup& subgroup, size_t k) const;
+  // Where the k-th inspector of a subgroup waits in `box` when the subgroup came to it from
+  // `from`: off the box's corner nearest `from`, 2.5 m apart, away from the box.
+  Vec3 waitPointNear(int32_t box, const Vec3& from, size_t k) const;
   double boxExploredFraction(int32_t box) const;
   bool fixedRegions() const {
     return options_.variant == SleiVariant::Pre || options_.variant == SleiVariant::Team;
@@ -111,8 +114,10 @@ class Slei3dStrategy : public agent::Strategy {
   agent::AgentCommand decideStation(const agent::AgentView& view);
   void answerReports(const agent::AgentView& view, agent::AgentCommand& command);
   void orderSchedule(const agent::AgentView& view);
-  // An explorer presumed lost: its box is given to the next subgroup that asks for one.
+  // An explorer presumed lost: its box is given to the next subgroup that asks for one, and its
+  // inspectors to the next explorer with a box that reports (orphans_).
   void releaseBox(uint32_t explorer);
+  void orphanInspectors(uint32_t explorer);
   size_t subgroupIndex(uint32_t explorer) const;  // of the plan's subgroups (size(): none)
 
   // ---- explorer (slei3d_explorer.cpp)
@@ -126,6 +131,9 @@ class Slei3dStrategy : public agent::Strategy {
   void planHandout(const agent::AgentView& view);
   double predictRemaining(const agent::AgentView& view) const;
   void enterBox(const agent::AgentView& view, int32_t box);
+  // Inspectors of a lost explorer, given by the station: met where they should wait and told of
+  // this subgroup's wait point.
+  void adoptInspectors(const agent::AgentView& view, const std::vector<Adoption>& adopt);
   // Done with the box before the meeting: the station's stop where it can be caught soonest.
   void goToStation(const agent::AgentView& view, const Vec3& place);
   Vec3 meetingPointNear(const agent::AgentView& view, const Vec3& partner, const Vec3& fallback,
@@ -158,6 +166,16 @@ class Slei3dStrategy : public agent::Strategy {
   std::vector<uint8_t> boxTaken_;               // per box: assigned to some subgroup
   std::vector<std::vector<int32_t>> boxOrder_;  // fixed orders: per subgroup, boxes left
   Vec3 staticPlace_ = Vec3::Zero();             // where it started: a static station stays there
+  // Per live explorer: its inspectors and where each should be waiting (the station's
+  // prediction: off the corner of the explorer's box nearest where it came from).
+  struct Member {
+    uint32_t inspector = 0;
+    Vec3 place = Vec3::Zero();
+  };
+  std::map<uint32_t, std::vector<Member>> members_;
+  std::map<uint32_t, Vec3> enteredFrom_;  // per explorer: where it came to its box from
+  std::vector<Adoption> orphans_;         // inspectors of lost explorers, not given yet
+  std::set<uint32_t> lost_;               // explorers presumed lost, not heard since
   // Its ground paths: around the boxes' footprints, the walls in the key frames it carries and
   // where it found its way blocked.
   std::unique_ptr<planning::GroundGrid> ground_;
@@ -173,6 +191,7 @@ class Slei3dStrategy : public agent::Strategy {
   ExplorerPhase phase_ = ExplorerPhase::ToBox;
   double lastSend_ = -1e300;
   int32_t box_ = -1;
+  Vec3 boxFrom_ = Vec3::Zero();  // where it came to the box from (its wait points' corner)
   double boxStart_ = 0.0;
   Meeting stationMeeting_;
   std::vector<Meeting> stationStops_;  // the station's schedule at the last reply, in order
@@ -246,6 +265,7 @@ class Slei3dStrategy : public agent::Strategy {
   planning::InspectorPlan predictedPlan(const InspectorModel& model, double now) const;
 
   // Inspector.
+  std::optional<uint32_t> myExplorer_;  // its subgroup's, or whoever adopted it since
   std::vector<FeatureTask> tasks_;
   std::set<uint32_t> inspected_;
   uint32_t lastOrders_ = 0;
