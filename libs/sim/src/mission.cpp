@@ -85,6 +85,12 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
     boxes.push_back({box.center, box.size, box.rotation, urgent[b] != 0});
   }
 
+  // Explorers' detector ranges, known to the fleet (0 when features are not the objective).
+  const auto detectRanges =
+      config.objective == Objective::Features
+          ? explorerDetectRanges(config.features.explorerRanges, config.features.sensor.range,
+                                 scenario, config.source)
+          : std::vector<double>(scenario.fleet.size(), 0.0);
   const auto airframes = vehicle::loadAirframes(config.airframes);
   const auto& explorerFrame =
       lookup(airframes, config.explorerAirframe, config.source, "[mission] explorer_airframe");
@@ -127,8 +133,9 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
     agent::StrategyContext context{
         ini, config.strategy, unit.spec->name, unit.role, i, seeds.fork(1000 + i).next(), {}, {},
         0.0};
-    for (const auto& member : scenario.fleet)
-      context.fleet.push_back({member.name, toAgentRole(member.role)});
+    for (size_t j = 0; j < scenario.fleet.size(); ++j)
+      context.fleet.push_back(
+          {scenario.fleet[j].name, toAgentRole(scenario.fleet[j].role), detectRanges[j]});
     context.camera = toCameraInfo(unit.spec->camera);
     context.collisionRadius = unit.collisionRadius;
     unit.strategy = registry.create(config.strategy, context);
@@ -166,6 +173,7 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
     features = std::make_unique<FeatureTracker>(
         config.features, scenario.interestPoints,
         highPriorityFeatures(urgent, scenario, config.source), std::move(names), std::move(roles),
+        detectRanges,
         [this](const std::string& kind, const std::string& unit, const std::string& detail) {
           event(kind, unit, detail);
         });

@@ -78,6 +78,14 @@ FeatureConfig readFeatures(const Config& config) {
   FeatureConfig out;
   out.sensor.range =
       positive(config, f, "detect_range", config.getDouble(f, "detect_range", out.sensor.range));
+  // Checked against the fleet's explorers when the mission is built (mission_features.cpp).
+  for (const auto& token : splitTokens(config.getString(f, "explorer_ranges", ""))) {
+    const auto value = parseFiniteDouble(token);
+    if (!value || !(*value > 0.0))
+      throw InputError(config.source(), "[features] explorer_ranges",
+                       "'" + token + "' is not a positive range in m");
+    out.explorerRanges.push_back(*value);
+  }
   out.sensor.halfYaw = angleDegrees(config, "detect_half_yaw", out.sensor.halfYaw);
   out.sensor.halfElevation =
       angleDegrees(config, "detect_half_elevation", out.sensor.halfElevation);

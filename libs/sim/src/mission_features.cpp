@@ -63,14 +63,34 @@ std::vector<uint8_t> highPriorityFeatures(const std::vector<uint8_t>& urgentBoxe
   return high;
 }
 
+std::vector<double> explorerDetectRanges(const std::vector<double>& ranges, double fallback,
+                                         const world::Scenario& scenario,
+                                         const std::string& source) {
+  std::vector<double> out(scenario.fleet.size(), 0.0);
+  size_t explorers = 0;
+  for (size_t i = 0; i < out.size(); ++i) {
+    if (scenario.fleet[i].role != world::UnitRole::Explorer) continue;
+    out[i] = explorers < ranges.size() ? ranges[explorers] : fallback;
+    ++explorers;
+  }
+  if (!ranges.empty() && ranges.size() != explorers)
+    throw InputError(source, "[features] explorer_ranges",
+                     std::to_string(ranges.size()) + " ranges for " + std::to_string(explorers) +
+                         " explorers: give one per explorer, in fleet order");
+  return out;
+}
+
 FeatureTracker::FeatureTracker(const FeatureConfig& config, const world::InterestPointSet& features,
                                std::vector<uint8_t> highPriority, std::vector<std::string> names,
-                               std::vector<agent::Role> roles, EventSink sink)
+                               std::vector<agent::Role> roles, std::vector<double> ranges,
+                               EventSink sink)
     : config_(config),
       features_(features),
       highPriority_(std::move(highPriority)),
       names_(std::move(names)),
       roles_(std::move(roles)),
+      ranges_(std::move(ranges)),
+      sensor_(config.sensor),
       sink_(std::move(sink)),
       carried_(names_.size(), features.size()),
       meetings_(names_.size(), config.meetingGap),
@@ -116,7 +136,8 @@ void FeatureTracker::addActivityTime(size_t unit, double time) {
 
 void FeatureTracker::detect(size_t unit, double time, const vehicle::VehicleState& state,
                             const world::RayCaster& caster) {
-  sensing::detectFeatures(config_.sensor, state.position, state.yaw, features_, caster, found_);
+  sensor_.range = ranges_[unit];
+  sensing::detectFeatures(sensor_, state.position, state.yaw, features_, caster, found_);
   auto& known = knownByUnit_[unit];
   for (const uint32_t f : found_) {
     if (known[f]) continue;

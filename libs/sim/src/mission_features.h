@@ -31,6 +31,13 @@ std::vector<uint8_t> highPriorityFeatures(const std::vector<uint8_t>& urgentBoxe
                                           const world::Scenario& scenario,
                                           const std::string& source);
 
+// Per unit of the scenario's fleet, its feature detector range: explorers in fleet order from
+// `ranges` (empty: `fallback` for all), 0 for the other units. Throws InputError naming the key
+// when `ranges` does not hold one range per explorer.
+std::vector<double> explorerDetectRanges(const std::vector<double>& ranges, double fallback,
+                                         const world::Scenario& scenario,
+                                         const std::string& source);
+
 class FeatureTracker {
  public:
   // kind, unit, detail (a mission event).
@@ -38,10 +45,11 @@ class FeatureTracker {
 
   // highPriority: per feature, 1 when its detection reports it urgent (empty: none is). The
   // units of role GroundStation are the stations: a feature is collected when any of them
-  // receives its result (the paper's several GCS), the first time only.
+  // receives its result (the paper's several GCS), the first time only. ranges: per unit, its
+  // detector range (explorerDetectRanges).
   FeatureTracker(const FeatureConfig& config, const world::InterestPointSet& features,
                  std::vector<uint8_t> highPriority, std::vector<std::string> names,
-                 std::vector<agent::Role> roles, EventSink sink);
+                 std::vector<agent::Role> roles, std::vector<double> ranges, EventSink sink);
 
   // The mission clock starts: activity time counts from here.
   void start(double time);
@@ -86,8 +94,10 @@ class FeatureTracker {
   }
   std::vector<std::string> names_;
   std::vector<agent::Role> roles_;
-  size_t stations_ = 0;   // units of role GroundStation
-  size_t collected_ = 0;  // features some station holds
+  std::vector<double> ranges_;     // per unit: its detector range (explorers)
+  sensing::FeatureSensor sensor_;  // buffer: config_.sensor with a unit's range
+  size_t stations_ = 0;            // units of role GroundStation
+  size_t collected_ = 0;           // features some station holds
   EventSink sink_;
   comms::CarriedData carried_;
   comms::MeetingCounter meetings_;

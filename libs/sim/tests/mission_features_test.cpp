@@ -43,7 +43,8 @@ world::Scenario featureScene() {
 struct Seen {
   std::map<std::string, std::vector<agent::FeatureView>> detected;
   std::map<std::string, std::vector<uint32_t>> inspected, received;
-  std::vector<bool> urgentBoxes;  // the boxes' highPriority flags as the units see them
+  std::vector<bool> urgentBoxes;     // the boxes' highPriority flags as the units see them
+  std::vector<double> detectRanges;  // the fleet's, as the strategies are told
 };
 
 // The explorer hovers at (6.5, -2, 4) facing the wall; the inspector hovers 5 m from it, camera
@@ -94,6 +95,9 @@ class Scripted final : public agent::Strategy {
 agent::StrategyRegistry scripted(double leaveAt, Seen& seen) {
   agent::StrategyRegistry registry;
   registry.registerStrategy("scripted", [leaveAt, &seen](const agent::StrategyContext& context) {
+    seen.detectRanges.clear();
+    for (const auto& member : context.fleet)
+      seen.detectRanges.push_back(member.detectRange);
     return std::make_unique<Scripted>(context.unitName, leaveAt, seen);
   });
   return registry;
@@ -394,6 +398,23 @@ TEST(FeatureMission, FeaturesInPriorityBoxesAreReportedAndCountedApart) {
   EXPECT_MENTIONS(message, "'far' holds no feature");
 }
 
+// Heterogeneous explorers: each detects within its own range, which its teammates know. The
+// explorer hovers 3.6 to 4.6 m from the three features.
+TEST(FeatureMission, EachExplorerDetectsWithinItsOwnRange) {
+  for (const auto& [range, expected] : {std::pair<double, size_t>{3.0, 0}, {6.0, 3}}) {
+    Seen seen;
+    const auto registry = scripted(12.0, seen);
+    const auto config = Config::fromText(
+        kFeatureMission +
+            "[features]\ndetect_range = 5\nexplorer_ranges = " + std::to_string(range) + "\n",
+        "features.ini");
+    Mission mission(featureScene(), config, registry);
+    mission.run();
+    EXPECT_EQ(mission.summary().features.discovered, expected) << range;
+    EXPECT_EQ(seen.detectRanges, (std::vector<double>{0.0, range, 0.0}));
+  }
+}
+
 TEST(FeatureMission, BadFeatureKeysAreErrorsNamingTheKey) {
   Seen seen;
   const auto registry = scripted(12.0, seen);
@@ -411,6 +432,9 @@ TEST(FeatureMission, BadFeatureKeysAreErrorsNamingTheKey) {
   expectError(kFeatureMission + "[features]\npunctuality_tolerance = -1\n",
               "punctuality_tolerance");
   expectError(kFeatureMission + "[features]\npriority_boxes = face roof\n", "priority_boxes");
+  expectError(kFeatureMission + "[features]\nexplorer_ranges = 5 5\n", "explorer_ranges");
+  expectError(kFeatureMission + "[features]\nexplorer_ranges = 0\n", "explorer_ranges");
+  expectError(kFeatureMission + "[features]\nexplorer_ranges = far\n", "explorer_ranges");
   expectError("[mission]\nobjective = score\n[strategy]\nname = scripted\n", "objective");
   expectError("[mission]\n[features]\ninspect_time = 2\n[strategy]\nname = scripted\n",
               "[features]");

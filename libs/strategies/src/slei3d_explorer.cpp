@@ -178,7 +178,8 @@ bool Slei3dStrategy::planExploration(const agent::AgentView& view) {
   toFrontier_ = false;
   if (!open.empty()) {
     planning::DetectionCoverageOptions coverage;
-    coverage.standoffs = {std::max(1.0, options_.sweepDistance - 1.0), options_.sweepDistance};
+    coverage.detector = detector_;
+    coverage.standoffs = {std::max(1.0, sweepDistance_ - 1.0), sweepDistance_};
     coverage.clearance = clearance;
     coverage.minHeight = 1.0;
     coverage.groundZ = groundZ_;
@@ -303,11 +304,10 @@ void Slei3dStrategy::goToStation(const agent::AgentView& view, const Vec3& place
 
 // Every open patch the detector passes over counts as swept, on the way to a stop as well.
 void Slei3dStrategy::markSwept(const agent::AgentView& view) {
-  const planning::DetectorModel detector;
   const auto& grid = map_->grid();
   for (const auto& patch : openList_)
     if (!swept_.count(patch.key) &&
-        planning::detects(detector, grid, view.odometry.position, view.odometry.yaw, patch,
+        planning::detects(detector_, grid, view.odometry.position, view.odometry.yaw, patch,
                           false) &&
         swept_.insert(patch.key).second)
       ++sweptInBox_;

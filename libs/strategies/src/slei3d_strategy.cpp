@@ -18,6 +18,7 @@ constexpr double kFloodPeriod = 1.0;   // s between broadcasts of the plan
 constexpr double kFloodUntil = 120.0;  // s: by then every robot holds the plan
 constexpr size_t kFramesPerDecision = 8;
 constexpr double kRelayCircle = 3.0;  // m from caric-team's relay where its inspectors wait
+constexpr double kReferenceDetectRange = 5.0;  // m, the detector the explorer's model assumes
 
 }  // namespace
 
@@ -57,7 +58,15 @@ void Slei3dStrategy::initialise(const agent::AgentView& view) {
   mapOptions.gridResolution = options_.gridResolution;
   mapOptions.keyFramesFromView = false;  // through the relay
   mapOptions.include = {view.odometry.position};
-  if (unit_.role == agent::Role::Explorer) mapOptions.ownSweepEvery = 2;
+  if (unit_.role == agent::Role::Explorer) {
+    mapOptions.ownSweepEvery = 2;
+    // Its own detector (heterogeneous explorers): the model and the sweep distance were tuned
+    // for the reference's 5 m and scale with the range.
+    const double range = unit_.fleet[unit_.self].detectRange;
+    const double scale = range > 0.0 ? range / kReferenceDetectRange : 1.0;
+    detector_.range *= scale;
+    sweepDistance_ = options_.sweepDistance * scale;
+  }
   mapOptions.boxMargin = options_.unknownBoxMargin;
   // Teammates seen from beyond the 5 m link are not filtered from scans: without this they
   // stayed in the maps as obstacles (one closed the way in front of slei-b's building).

@@ -157,8 +157,10 @@ std::vector<StationShare> stationShares(const std::vector<agent::FleetMember>& f
   for (size_t k = 0; k < shares.size(); ++k) {
     shares[k].station = stations[k];
     shares[k].boxes.assign(boxes.size(), 0);
-    for (size_t j = 0; j < explorerCounts[k]; ++j)
+    for (size_t j = 0; j < explorerCounts[k]; ++j) {
+      shares[k].explorerRanges.push_back(fleet[explorers[nextExplorer]].detectRange);
       shares[k].explorers.push_back(explorers[nextExplorer++]);
+    }
     for (size_t j = 0; j < inspectorCounts[k]; ++j)
       shares[k].inspectors.push_back(inspectors[nextInspector++]);
   }
@@ -198,6 +200,32 @@ std::vector<StationShare> stationShares(const std::vector<agent::FleetMember>& f
   return shares;
 }
 
+namespace {
+
+// Heterogeneous explorers: the subgroups' boxes dealt again, the largest to the longest range.
+// Nothing changes when every range is the same.
+void dealBoxesByRange(std::vector<Subgroup>& subgroups, const std::vector<double>& ranges,
+                      const std::vector<agent::BoxView>& boxes) {
+  if (ranges.size() != subgroups.size() ||
+      std::all_of(ranges.begin(), ranges.end(), [&](double r) { return r == ranges.front(); }))
+    return;
+  std::vector<size_t> byRange;
+  std::vector<int32_t> chosen;
+  for (size_t i = 0; i < subgroups.size(); ++i) {
+    byRange.push_back(i);
+    if (subgroups[i].box >= 0) chosen.push_back(subgroups[i].box);
+  }
+  std::stable_sort(byRange.begin(), byRange.end(),
+                   [&](size_t a, size_t b) { return ranges[a] > ranges[b]; });
+  const auto volume = [&](int32_t b) { return boxes[static_cast<size_t>(b)].size.prod(); };
+  std::stable_sort(chosen.begin(), chosen.end(),
+                   [&](int32_t a, int32_t b) { return volume(a) > volume(b); });
+  for (size_t k = 0; k < byRange.size(); ++k)
+    subgroups[byRange[k]].box = k < chosen.size() ? chosen[k] : -1;
+}
+
+}  // namespace
+
 FleetPlan makeFleetPlan(const StationShare& share, const std::vector<agent::BoxView>& boxes,
                         const Vec3& station, double groundZ, double now,
                         const PlanOptions& options) {
@@ -220,6 +248,7 @@ FleetPlan makeFleetPlan(const StationShare& share, const std::vector<agent::BoxV
     }
     plan.subgroups.push_back(s);
   }
+  dealBoxesByRange(plan.subgroups, share.explorerRanges, boxes);
   std::vector<double> weights;
   for (const auto& s : plan.subgroups) {
     const auto& size = s.box >= 0 ? boxes[static_cast<size_t>(s.box)].size : Vec3::Zero().eval();

@@ -202,6 +202,30 @@ TEST(SleiFleetPlan, SeveralStationsShareExplorersInspectorsAndBoxStrips) {
   EXPECT_TRUE(orders[1].empty());
 }
 
+// Heterogeneous explorers (the paper: longer range, larger boxes): the first boxes chosen by
+// the nearest-first chain are dealt again by volume and range.
+TEST(SleiFleetPlan, TheLongestRangeExplorerGetsTheLargestFirstBox) {
+  std::vector<agent::FleetMember> fleet{{"gcs", agent::Role::GroundStation},
+                                        {"e1", agent::Role::Explorer, 8.0},
+                                        {"e2", agent::Role::Explorer, 5.0},
+                                        {"i1", agent::Role::Photographer}};
+  const std::vector<agent::BoxView> boxes{makeBox({10, 0, 5}, {4, 4, 10}),
+                                          makeBox({20, 0, 5}, {8, 8, 10}),
+                                          makeBox({40, 0, 5}, {4, 4, 10})};
+  const auto shares = stationShares(fleet, boxes);
+  EXPECT_EQ(shares[0].explorerRanges, (std::vector<double>{8.0, 5.0}));
+  const auto plan = makeFleetPlan(shares[0], boxes, Vec3(0, 0, 0.1), 0.0, 0.0, PlanOptions{});
+  ASSERT_EQ(plan.subgroups.size(), 2u);
+  EXPECT_EQ(plan.subgroups[0].box, 1);  // e1, 8 m: the larger of the two nearest
+  EXPECT_EQ(plan.subgroups[1].box, 0);
+  // Equal ranges: the chain's order (e1 the nearest box).
+  fleet[1].detectRange = 5.0;
+  const auto same =
+      makeFleetPlan(stationShares(fleet, boxes)[0], boxes, Vec3(0, 0, 0.1), 0.0, 0.0, {});
+  EXPECT_EQ(same.subgroups[0].box, 0);
+  EXPECT_EQ(same.subgroups[1].box, 1);
+}
+
 TEST(SleiFleetPlan, ALostSubgroupsBoxGoesToTheShortestOtherOrder) {
   std::vector<std::vector<int32_t>> orders{{1, 2}, {3}, {4}};
   giveBoxToShortestOrder(orders, 1, 7);  // 1 is lost: 2 is the shortest of the others

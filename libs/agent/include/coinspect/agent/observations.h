@@ -100,6 +100,9 @@ struct CameraInfo {
 struct FleetMember {
   std::string name;
   Role role = Role::Photographer;
+  // m, an explorer's feature detector range in a feature mission (its spec sheet, known to the
+  // fleet: [features] explorer_ranges); 0 otherwise.
+  double detectRange = 0.0;
 };
 
 // A bounding box of the mission (CARIC publishes them to every unit).

@@ -45,7 +45,9 @@ enum class Objective { Points, Features };
 
 // [features]: only with objective = features.
 struct FeatureConfig {
-  sensing::FeatureSensor sensor;       // explorers' detector
+  sensing::FeatureSensor sensor;  // explorers' detector
+  // m, per explorer in fleet order (heterogeneous ranges); empty: sensor.range for all.
+  std::vector<double> explorerRanges;
   double inspectTime = 3.0;            // s of consecutive captures that count a feature
   double inspectScore = 0.2;           // CARIC score a capture needs to count a feature
   double meetingGap = 2.0;             // s a pair's link must have been down for a new meeting

@@ -81,7 +81,8 @@ size_t blockGroundObstacles(planning::GroundGrid& ground,
 struct StationShare {
   uint32_t station = 0;  // fleet index
   std::vector<uint32_t> explorers, inspectors;
-  std::vector<uint8_t> boxes;  // per box: 1 when it is this station's
+  std::vector<double> explorerRanges;  // per explorer: its detector range (FleetMember)
+  std::vector<uint8_t> boxes;          // per box: 1 when it is this station's
 };
 std::vector<StationShare> stationShares(const std::vector<agent::FleetMember>& fleet,
                                         const std::vector<agent::BoxView>& boxes);
@@ -99,7 +100,9 @@ struct PlanOptions {
 // nearest the station), its inspectors are split in fleet order; each subgroup's first meeting
 // is at the corner of its box nearest the previous meeting (the station's own position first),
 // at times chained as the station would drive them (straight legs at stationSpeed + legBuffer,
-// after firstMeetingLead).
+// after firstMeetingLead). Explorers of different detector ranges (the paper's heterogeneous
+// explorers): the first boxes so chosen are dealt again, the largest to the longest range (ties
+// in fleet order).
 FleetPlan makeFleetPlan(const StationShare& share, const std::vector<agent::BoxView>& boxes,
                         const Vec3& station, double groundZ, double now,
                         const PlanOptions& options);

@@ -26,6 +26,7 @@
 
 #include "coinspect/agent/strategy.h"
 #include "coinspect/planning/coverage.h"
+#include "coinspect/planning/detection_coverage.h"
 #include "coinspect/planning/ground_path.h"
 #include "coinspect/planning/meeting_route.h"
 #include "coinspect/strategies/coinspect/keyframe_relay.h"
@@ -202,8 +203,10 @@ class Slei3dStrategy : public agent::Strategy {
   uint32_t meetingNumber_ = 1;
   bool explorationFinished_ = false;
   std::optional<Vec3> exploreAim_;
-  std::vector<Vec3> unreachable_;  // frontier clusters flown to or given up
-  std::set<uint64_t> swept_;       // surface patches the detector has passed close to
+  std::vector<Vec3> unreachable_;     // frontier clusters flown to or given up
+  std::set<uint64_t> swept_;          // surface patches the detector has passed close to
+  planning::DetectorModel detector_;  // its own detector (range scaled to its detectRange)
+  double sweepDistance_ = 4.0;        // m, options_.sweepDistance scaled the same way
   // The detector's sweep: the box's open patches at the last plan and the viewpoints that pass
   // the detector over them, in flying order (each with the patches it was chosen for).
   struct SweepStop {
