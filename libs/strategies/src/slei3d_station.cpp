@@ -9,13 +9,14 @@ namespace coinspect::strategies::slei {
 
 namespace {
 
-constexpr double kNoMeeting = 1e300;    // Reply::next.time when the explorer has nothing left
-constexpr double kArrived = 0.5;        // m from a meeting place that counts as there
-constexpr double kMinRemaining = 50.0;  // s (the reference's floor)
-constexpr double kNewBoxLead = 60.0;    // s to the first meeting in a new box (the reference)
-constexpr double kPresumedLost = 6.0;   // meeting graces after its time: the explorer is lost
-constexpr double kStuckDistance = 0.2;  // m: moved less than this ...
-constexpr double kStuckTime = 3.0;      // s ... for this long while driving: blocked
+constexpr double kNoMeeting = 1e300;     // Reply::next.time when the explorer has nothing left
+constexpr double kArrived = 0.5;         // m from a meeting place that counts as there
+constexpr double kMinRemaining = 50.0;   // s (the reference's floor)
+constexpr double kNewBoxLead = 60.0;     // s to the first meeting in a new box (the reference)
+constexpr double kPresumedLost = 6.0;    // meeting graces after its time: the explorer is lost
+constexpr double kUnreachedFor = 300.0;  // s more when the station never got there
+constexpr double kStuckDistance = 0.2;   // m: moved less than this ...
+constexpr double kStuckTime = 3.0;       // s ... for this long while driving: blocked
 constexpr double kBlockAhead = 0.8, kBlockRadius = 0.7;  // m: the ground it then blocks
 
 }  // namespace
@@ -198,20 +199,39 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
     command.activity = agent::Activity::Waiting;
     return command;
   }
-  // An explorer that does not come within a long grace of its meeting is presumed lost: the
-  // station goes on to the next one, and its box goes back to the free ones (the paper's failure
-  // recovery: the next subgroup done with a box takes it). An explorer that turns up again is
-  // answered as usual.
+  // An explorer that does not come within a long grace of its meeting (and of the station's
+  // arrival there) is presumed lost: the station goes on to the next one, and its box goes back
+  // to the free ones (the paper's failure recovery: the next subgroup done with a box takes it).
+  // An explorer that turns up again is answered as usual.
+  std::vector<double> times;
+  for (const auto& m : schedule_)
+    times.push_back(m.meeting.time);
+  const size_t serve = meetingToServe(times, view.time);
+  if (serve > 0)
+    std::rotate(schedule_.begin(), schedule_.begin() + static_cast<std::ptrdiff_t>(serve),
+                schedule_.begin() + static_cast<std::ptrdiff_t>(serve) + 1);
   const auto& next = schedule_.front();
-  if (view.time > next.meeting.time + kPresumedLost * options_.meetingGrace) {
+  // The grace runs from when the station is there: a station that comes late itself must not
+  // give up an explorer that has been waiting for it.
+  if (next.explorer != waitingFor_ || next.meeting.time != waitingForTime_) {
+    waitingFor_ = next.explorer;
+    waitingForTime_ = next.meeting.time;
+    arrivedAt_.reset();
+  }
+  const double distance =
+      std::hypot(next.meeting.place.x() - here.x(), next.meeting.place.y() - here.y());
+  if ((distance <= kArrived || staticStation()) && !arrivedAt_) arrivedAt_ = view.time;
+  // A place it cannot get to is given up too, a long while after (kUnreachedFor).
+  const double grace = kPresumedLost * options_.meetingGrace;
+  const double giveUpAt = arrivedAt_ ? std::max(next.meeting.time, *arrivedAt_) + grace
+                                     : next.meeting.time + grace + kUnreachedFor;
+  if (view.time > giveUpAt) {
     releaseBox(next.explorer);
     orphanInspectors(next.explorer);
     schedule_.erase(schedule_.begin());
     orderSchedule(view);
     return command;
   }
-  const double distance =
-      std::hypot(next.meeting.place.x() - here.x(), next.meeting.place.y() - here.y());
   if (!staticStation()) driveStation(view, next.meeting.place, command);
   command.activity =
       distance > kArrived ? agent::Activity::TravellingToMeeting : agent::Activity::Waiting;

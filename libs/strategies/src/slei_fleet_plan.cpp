@@ -274,6 +274,14 @@ FleetPlan makeFleetPlan(const StationShare& share, const std::vector<agent::BoxV
   return plan;
 }
 
+size_t meetingToServe(const std::vector<double>& times, double now) {
+  if (times.empty() || times.front() <= now) return 0;
+  size_t overdue = times.size();
+  for (size_t i = 1; i < times.size(); ++i)
+    if (times[i] < now && (overdue == times.size() || times[i] < times[overdue])) overdue = i;
+  return overdue == times.size() ? 0 : overdue;
+}
+
 planning::GroundGrid stationGroundGrid(const std::vector<agent::BoxView>& boxes,
                                        const planning::Vec2& also, double radius) {
   planning::Vec2 low = also, high = also;

@@ -226,6 +226,14 @@ TEST(SleiFleetPlan, TheLongestRangeExplorerGetsTheLargestFirstBox) {
   EXPECT_EQ(same.subgroups[1].box, 1);
 }
 
+TEST(SleiFleetPlan, TheStationServesAnOverdueMeetingBeforeWaitingForALaterOne) {
+  EXPECT_EQ(meetingToServe({}, 100.0), 0u);
+  EXPECT_EQ(meetingToServe({90.0, 50.0}, 100.0), 0u);    // the first is due: it goes on
+  EXPECT_EQ(meetingToServe({300.0, 200.0}, 100.0), 0u);  // nothing overdue
+  // The first is not due before 700 s; two others were due at 95 and 80 s: the earliest first.
+  EXPECT_EQ(meetingToServe({700.0, 95.0, 80.0}, 100.0), 2u);
+}
+
 TEST(SleiFleetPlan, ALostSubgroupsBoxGoesToTheShortestOtherOrder) {
   std::vector<std::vector<int32_t>> orders{{1, 2}, {3}, {4}};
   giveBoxToShortestOrder(orders, 1, 7);  // 1 is lost: 2 is the shortest of the others

@@ -177,6 +177,10 @@ class Slei3dStrategy : public agent::Strategy {
   std::map<uint32_t, Vec3> enteredFrom_;  // per explorer: where it came to its box from
   std::vector<Adoption> orphans_;         // inspectors of lost explorers, not given yet
   std::set<uint32_t> lost_;               // explorers presumed lost, not heard since
+  // The meeting it drives to or waits at, and when it got there.
+  uint32_t waitingFor_ = ~uint32_t{0};
+  double waitingForTime_ = 0.0;
+  std::optional<double> arrivedAt_;
   // Its ground paths: around the boxes' footprints, the walls in the key frames it carries and
   // where it found its way blocked.
   std::unique_ptr<planning::GroundGrid> ground_;
