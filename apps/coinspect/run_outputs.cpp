@@ -96,6 +96,8 @@ record::RunReport makeReport(const sim::MissionSummary& s, const Config& ini,
     unit.detected = u.detected;
     unit.ownScore = u.ownScore;
     unit.rejectedCommands = u.rejectedCommands;
+    unit.lowestEnergy = u.lowestEnergy;
+    unit.chargedFor = u.chargedFor;
     r.units.push_back(unit);
   }
   r.collisions = s.collisions;

@@ -19,7 +19,10 @@ nlohmann::json unitJson(const RunReportUnit& unit) {
           {"captures", unit.captures},
           {"detected", unit.detected},
           {"own_score", unit.ownScore},
-          {"rejected_commands", unit.rejectedCommands}};
+          {"rejected_commands", unit.rejectedCommands},
+          {"energy_lowest",
+           unit.lowestEnergy ? nlohmann::json(*unit.lowestEnergy) : nlohmann::json(nullptr)},
+          {"charged_s", unit.chargedFor}};
 }
 
 nlohmann::json featuresJson(const RunReportFeatures& f) {

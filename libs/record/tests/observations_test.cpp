@@ -143,7 +143,9 @@ TEST(Observations, EventKindsKeepTheirNumbersAndRoundTrip) {
       {MissionEventKind::FeatureInspected, "feature-inspected"},
       {MissionEventKind::FeatureCollected, "feature-collected"},
       {MissionEventKind::Meeting, "meeting"},
-      {MissionEventKind::ActivityChanged, "activity-changed"}};
+      {MissionEventKind::ActivityChanged, "activity-changed"},
+      {MissionEventKind::ChargeStart, "charge-start"},
+      {MissionEventKind::ChargeEnd, "charge-end"}};
   for (size_t number = 0; number < kinds.size(); ++number) {
     const auto [kind, name] = kinds[number];
     EXPECT_EQ(static_cast<size_t>(kind), number) << name;

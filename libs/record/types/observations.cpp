@@ -275,6 +275,10 @@ const char* toString(MissionEventKind kind) {
       return "meeting";
     case MissionEventKind::ActivityChanged:
       return "activity-changed";
+    case MissionEventKind::ChargeStart:
+      return "charge-start";
+    case MissionEventKind::ChargeEnd:
+      return "charge-end";
   }
   return "unknown";
 }

@@ -99,6 +99,24 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
   std::map<std::string, sensing::LidarSpec> lidars;
   if (config.explorerLidar != "none") lidars = sensing::loadLidarModels(config.lidars);
 
+  // Batteries: explorers only (they are the units that meet the stations in SLEI3D), charged
+  // by a station: a fleet without one could never charge.
+  const auto batteryOf = [&](const world::UnitSpec& spec) {
+    agent::BatterySpec battery;
+    if (!config.energy || spec.role != world::UnitRole::Explorer) return battery;
+    battery.capacity = config.energy->capacity;
+    battery.chargeTime = config.energy->chargeTime;
+    battery.chargeRange = config.energy->chargeRange;
+    return battery;
+  };
+  if (config.energy &&
+      std::none_of(scenario.fleet.begin(), scenario.fleet.end(), [](const world::UnitSpec& s) {
+        return s.role == world::UnitRole::GroundStation;
+      }))
+    throw InputError(
+        config.source, "[energy]",
+        "the fleet has no ground station to charge at (scenario '" + scenario.name + "')");
+
   const size_t pointCount = scenario.interestPoints.size();
   const Rng seeds(config.seed);
   units.resize(scenario.fleet.size());
@@ -128,14 +146,16 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
       unit.capturePeriod = ticksFor(
           sensing::capturePeriod(unit.spec->camera.triggerInterval, step, config.scoring), step);
       unit.nextCapture = unit.capturePeriod;
+      unit.battery = batteryOf(*unit.spec);
+      if (unit.battery.limited()) unit.energy = unit.lowestEnergy = config.energy->startLevel;
     }
     // Ground stations get a strategy too: it drives a mobile one (gcs_speed > 0).
     agent::StrategyContext context{
         ini, config.strategy, unit.spec->name, unit.role, i, seeds.fork(1000 + i).next(), {}, {},
         0.0};
     for (size_t j = 0; j < scenario.fleet.size(); ++j)
-      context.fleet.push_back(
-          {scenario.fleet[j].name, toAgentRole(scenario.fleet[j].role), detectRanges[j]});
+      context.fleet.push_back({scenario.fleet[j].name, toAgentRole(scenario.fleet[j].role),
+                               detectRanges[j], batteryOf(scenario.fleet[j])});
     context.camera = toCameraInfo(unit.spec->camera);
     context.collisionRadius = unit.collisionRadius;
     unit.strategy = registry.create(config.strategy, context);
@@ -324,6 +344,7 @@ void Mission::Impl::monitor() {
       }
     }
   }
+  if (started && config.energy) updateEnergy(static_cast<double>(monitorPeriod) * step);
   stages.collisions += secondsSince(stageStart);
 }
 

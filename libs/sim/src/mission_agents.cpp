@@ -36,6 +36,7 @@ agent::AgentView Mission::Impl::observe(size_t i) {
   view.missionTime = started ? now() - startTime : 0.0;
   view.timeLeft = budget - view.missionTime;
   view.odometry = toOdometry(unit.state());
+  view.energy = unit.energy;
   if (unit.gimbal) {  // a ground station has none: its gimbal state stays zero
     const auto& camera = unit.spec->camera;
     view.gimbal.pitch = unit.gimbal->pitch();

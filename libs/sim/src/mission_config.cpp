@@ -73,6 +73,19 @@ double angleDegrees(const Config& config, const std::string& key, double fallbac
   return degrees * M_PI / 180.0;
 }
 
+EnergyConfig readEnergy(const Config& config) {
+  const std::string e = "energy";
+  EnergyConfig out;
+  out.capacity = positive(config, e, "capacity", config.getDouble(e, "capacity"));
+  out.chargeTime = positive(config, e, "charge_time", config.getDouble(e, "charge_time"));
+  out.chargeRange =
+      positive(config, e, "charge_range", config.getDouble(e, "charge_range", out.chargeRange));
+  out.startLevel = config.getDouble(e, "start_level", out.startLevel);
+  if (!(out.startLevel > 0.0 && out.startLevel <= 1.0))
+    throw InputError(config.source(), "[energy] start_level", "must be in (0, 1]");
+  return out;
+}
+
 FeatureConfig readFeatures(const Config& config) {
   const std::string f = "features";
   FeatureConfig out;
@@ -185,6 +198,7 @@ MissionConfig MissionConfig::read(const Config& config, std::optional<uint64_t> 
   else if (config.hasSection("features"))
     throw InputError(config.source(), "[features]",
                      "only allowed with [mission] objective = features");
+  if (config.hasSection("energy")) out.energy = readEnergy(config);
   out.strategy = config.getString("strategy", "name");
   out.record = RecordConfig::read(config, out.physicsStep);
 

@@ -54,6 +54,13 @@ struct UnitRuntime {
   world::Vec3 lastPosition = world::Vec3::Zero();
   size_t captures = 0;
   long long badFeatureIds = 0;  // assignments naming no feature (counted as rejected commands)
+  // [energy]: the battery (not limited: capacity 0), its level (fraction), the lowest level it
+  // reached, whether it is charging and for how long it has charged in all (s).
+  agent::BatterySpec battery;
+  double energy = 1.0;
+  double lowestEnergy = 1.0;
+  bool charging = false;
+  double chargedFor = 0.0;
   // Gathered between two decisions.
   std::vector<agent::CaptureReport> pendingCaptures;
   std::vector<agent::KeyFrameView> pendingOwnKeyFrames;
@@ -136,6 +143,7 @@ struct Mission::Impl {
   void advanceStation(UnitRuntime& unit, double dt);
   void applyFaultsAndBlackouts();
   void monitor();
+  void updateEnergy(double dt);  // mission_energy.cpp
   void updateTopology();
   void sweepLidars();
   void capture(size_t unit);

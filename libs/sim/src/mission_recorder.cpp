@@ -43,6 +43,8 @@ record::MissionEventKind eventKind(const std::string& kind) {
   if (kind == "feature-collected") return K::FeatureCollected;
   if (kind == "meeting") return K::Meeting;
   if (kind == "activity-changed") return K::ActivityChanged;
+  if (kind == "charge-start") return K::ChargeStart;
+  if (kind == "charge-end") return K::ChargeEnd;
   COINSPECT_ASSERT(!"a mission event kind without a rawlog kind");
   return K::Failure;
 }

@@ -39,6 +39,8 @@ MissionSummary Mission::summary() const {
     u.captures = unit.captures;
     u.detected = unit.log.detectedCount();
     u.ownScore = unit.ownScore;
+    if (unit.battery.limited()) u.lowestEnergy = unit.lowestEnergy;
+    u.chargedFor = unit.chargedFor;
     u.rejectedCommands =
         (unit.vehicle ? unit.vehicle->rejectedCommands() : unit.ground->rejectedCommands()) +
         unit.badFeatureIds;
@@ -121,8 +123,12 @@ std::string formatSummary(const MissionSummary& s) {
   add("distance    %.1f m flown in total\n", distance);
   for (const auto& u : s.units) {
     if (u.role == "gcs") continue;
-    add("  %-10s %-12s %8.1f m, %5zu captures, own log %5zu points %9.2f%s%s\n", u.name.c_str(),
-        u.role.c_str(), u.distanceFlown, u.captures, u.detected, u.ownScore,
+    char battery[96] = "";
+    if (u.lowestEnergy)
+      std::snprintf(battery, sizeof battery, ", battery lowest %.0f %%, charged %.0f s",
+                    100.0 * *u.lowestEnergy, u.chargedFor);
+    add("  %-10s %-12s %8.1f m, %5zu captures, own log %5zu points %9.2f%s%s%s\n", u.name.c_str(),
+        u.role.c_str(), u.distanceFlown, u.captures, u.detected, u.ownScore, battery,
         u.alive ? "" : ", dead: ", u.deathCause.c_str());
   }
   add("messages    sent %llu, delivered %llu, dropped %llu; key frames %llu, delivered %llu\n",

@@ -37,6 +37,9 @@ constexpr double kInspectionTime = 3.0;     // s, t_q ([features] inspect_time's
 constexpr double kHubReach = 10.0;          // m from caric-team's hub where it hands out
 constexpr double kPoseTravel = 5.0;         // s between two poses of a list, a rough guess
 constexpr double kNoMeeting = 1e299;
+constexpr double kCharged = 0.99;         // battery level at which it stops charging
+constexpr double kChargePatience = 20.0;  // s without the level rising: no charger in reach
+constexpr double kChargeHeight = 0.8;     // share of the charge range above the station
 
 double straightTime(const Vec3& a, const Vec3& b, double speed) {
   return kTravelFactor * (a - b).norm() / speed;
@@ -534,6 +537,36 @@ void Slei3dStrategy::startHandouts(std::vector<Handout> planned) {
   flight_->goTo(handouts_.front().place, options_.speed);
 }
 
+// Above the station, within its charger's range (straight above it: the explorer flies no lower
+// than its clearance), until charged; then on with what the last reply said.
+agent::AgentCommand Slei3dStrategy::charge(const agent::AgentView& view, uint32_t station) {
+  for (const auto& other : view.neighbours)
+    if (other.name == names_[station]) stationSeen_ = other.odometry.position;
+  if (view.energy > chargeLevel_) {
+    chargeLevel_ = view.energy;
+    chargeRoseAt_ = view.time;
+  }
+  if (view.time < chargeFrom_) {
+    flight_->hover();  // the charger is busy: where it met the station, in link
+  } else if (view.energy >= kCharged || view.time - chargeRoseAt_ > kChargePatience) {
+    charging_ = false;
+    if (phase_ == ExplorerPhase::ToBox)
+      flight_->goTo(boxCorner(boxes_, static_cast<size_t>(box_), options_.plan.cornerOffset,
+                              groundZ_ + options_.exploreHeight, boxFrom_),
+                    options_.speed);
+    lastPlan_ = -1e300;
+  } else {
+    const double above = kChargeHeight * unit_.fleet[unit_.self].battery.chargeRange;
+    flight_->goTo(
+        Vec3(stationSeen_.x(), stationSeen_.y(), std::max(stationSeen_.z(), groundZ_) + above),
+        options_.speed);
+  }
+  auto flown = fly(view, std::nullopt);
+  flown.activity = agent::Activity::Waiting;
+  if (stationMeeting_.time < kNoMeeting) flown.stationMeetingTime = stationMeeting_.time;
+  return flown;
+}
+
 agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view) {
   const auto* subgroup = subgroupOf(static_cast<uint32_t>(unit_.self));
   if (!joined_) {
@@ -587,7 +620,16 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
       inspectors_.clear();
     }
     adoptInspectors(view, reply->adopt);
+    // [energy]: it charges above the station before it goes on; the station waits for the time
+    // the report's level needs.
+    if (unit_.fleet[unit_.self].battery.limited() && view.energy < kCharged) {
+      charging_ = true;
+      chargeFrom_ = reply->chargeFrom;
+      chargeLevel_ = view.energy;
+      chargeRoseAt_ = std::max(view.time, chargeFrom_);
+    }
   }
+  if (charging_) return charge(view, subgroup->station);
 
   // Done early: catch the station at one of its stops rather than wait for the meeting.
   // Without inspectors (none in its share, or given to others while it was presumed lost) its
@@ -642,6 +684,7 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
                            (nothingToHand || options_.variant == SleiVariant::ExploreFirst));
           report.remaining = predictRemaining(view);
           report.meetingNumber = meetingNumber_;
+          if (unit_.fleet[unit_.self].battery.limited()) report.energy = view.energy;
           send(command, stationIndex, kReportTopic, encode(report));
         }
       }

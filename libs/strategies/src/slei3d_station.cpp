@@ -18,6 +18,8 @@ constexpr double kUnreachedFor = 300.0;  // s more when the station never got th
 constexpr double kStuckDistance = 0.2;   // m: moved less than this ...
 constexpr double kStuckTime = 3.0;       // s ... for this long while driving: blocked
 constexpr double kBlockAhead = 0.8, kBlockRadius = 0.7;  // m: the ground it then blocks
+constexpr double kRechargeLevel = 0.2;  // battery level an explorer must be back by (the paper)
+constexpr double kChargeSettle = 5.0;   // s for an explorer to get above the charger
 
 }  // namespace
 
@@ -27,7 +29,7 @@ constexpr double kBlockAhead = 0.8, kBlockRadius = 0.7;  // m: the ground it the
 void Slei3dStrategy::orderSchedule(const agent::AgentView& view) {
   planning::MeetingOrderProblem problem;
   problem.start = view.odometry.position;
-  problem.startTime = view.time;
+  problem.startTime = std::max(view.time, holdUntil_);  // an explorer charging first
   problem.travelTime = planning::groundTravelTime(options_.plan.stationSpeed);
   for (size_t i = 0; i < schedule_.size(); ++i) {
     planning::GcsMeeting meeting;
@@ -97,7 +99,21 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
                                               options_.plan.cornerOffset, here.z(), here)
                                   : here;
       if (staticStation()) place = staticPlace_, lead = options_.fixInterval;
-      reply.next = {place, view.time + lead};
+      // [energy] (the paper's eq. 15): the explorer charges first, the station waiting for it,
+      // and must be back before its battery falls to 20 %: the meeting moves by the charging
+      // time and comes no later than the charge allows.
+      // One charger: an explorer that finds another charging waits for it, losing charge.
+      double start = view.time;
+      const auto& battery = unit_.fleet[explorer].battery;
+      if (battery.limited() && report->energy < 1.0) {
+        reply.chargeFrom = std::max(view.time, holdUntil_);
+        const double level =
+            std::max(0.0, report->energy - (reply.chargeFrom - view.time) / battery.capacity);
+        start = reply.chargeFrom + (1.0 - level) * battery.chargeTime + kChargeSettle;
+        holdUntil_ = start;
+      }
+      if (battery.limited()) lead = std::min(lead, (1.0 - kRechargeLevel) * battery.capacity);
+      reply.next = {place, start + lead};
     }
     // Its inspectors wait off the new box's corner nearest where it came from (here, within a
     // link of it); a lost explorer's inspectors go to the next explorer with a box that reports.
@@ -175,6 +191,14 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
     if (staticStation())
       for (auto& s : plan_->subgroups)
         s.firstMeeting = {staticPlace_, view.time + options_.fixInterval};
+    // [energy]: the first meeting too before a full battery is down to 20 % (the station does
+    // not know the explorers' levels before their first report: full, it assumes).
+    for (auto& s : plan_->subgroups) {
+      const auto& battery = unit_.fleet[s.explorer].battery;
+      if (battery.limited())
+        s.firstMeeting.time =
+            std::min(s.firstMeeting.time, view.time + (1.0 - kRechargeLevel) * battery.capacity);
+    }
     if (fixedRegions()) {
       std::vector<int32_t> first;
       for (const auto& s : plan_->subgroups)
@@ -195,6 +219,13 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
     orderSchedule(view);
   }
   answerReports(view, command);
+  if (view.time < holdUntil_) {  // an explorer charges above it: it stops where it is
+    agent::AgentSetpoint stay;
+    stay.position = here;
+    command.setpoint = stay;
+    command.activity = agent::Activity::Waiting;
+    return command;
+  }
   if (schedule_.empty()) {
     command.activity = agent::Activity::Waiting;
     return command;

@@ -86,6 +86,7 @@ std::vector<uint8_t> encode(const Report& report) {
   w.u8(report.boxFinished ? 1 : 0);
   w.f64(report.remaining);
   w.u32(report.meetingNumber);
+  w.f64(report.energy);
   return w.take();
 }
 
@@ -94,7 +95,8 @@ std::optional<Report> decodeReport(const std::vector<uint8_t>& bytes) {
   Report report;
   uint8_t finishedFlag = 0;
   const bool ok = r.i32(&report.box) && r.u8(&finishedFlag) && finishedFlag <= 1 &&
-                  r.f64(&report.remaining) && r.u32(&report.meetingNumber);
+                  r.f64(&report.remaining) && r.u32(&report.meetingNumber) &&
+                  r.f64(&report.energy) && report.energy >= 0.0 && report.energy <= 1.0;
   report.boxFinished = finishedFlag == 1;
   return finished(r, ok, report);
 }
@@ -113,6 +115,7 @@ std::vector<uint8_t> encode(const Reply& reply) {
     w.vec3(a.place);
   }
   w.u8(reply.dropInspectors ? 1 : 0);
+  w.f64(reply.chargeFrom);
   return w.take();
 }
 
@@ -130,7 +133,7 @@ std::optional<Reply> decodeReply(const std::vector<uint8_t>& bytes) {
   for (uint32_t i = 0; ok && i < n; ++i)
     ok = r.u32(&reply.adopt[i].inspector) && r.vec3(&reply.adopt[i].place);
   uint8_t drop = 0;
-  ok = ok && r.u8(&drop) && drop <= 1;
+  ok = ok && r.u8(&drop) && drop <= 1 && r.f64(&reply.chargeFrom);
   reply.dropInspectors = drop == 1;
   return finished(r, ok, std::move(reply));
 }

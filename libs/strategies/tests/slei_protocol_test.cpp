@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace coinspect::strategies::slei {
 namespace {
 
@@ -18,21 +20,24 @@ TEST(SleiProtocol, EveryMessageRoundTrips) {
   EXPECT_EQ(decodedPlan->subgroups[0].station, 7u);
   EXPECT_EQ(decodedPlan->subgroups[1].box, -1);
 
-  const auto report = decodeReport(encode(Report{2, true, 75.25, 4}));
+  const auto report = decodeReport(encode(Report{2, true, 75.25, 4, 0.375}));
   ASSERT_TRUE(report);
   EXPECT_EQ(report->box, 2);
   EXPECT_TRUE(report->boxFinished);
   EXPECT_EQ(report->remaining, 75.25);
   EXPECT_EQ(report->meetingNumber, 4u);
+  EXPECT_EQ(report->energy, 0.375);
 
   const auto reply = decodeReply(encode(Reply{4,
                                               5,
                                               {Vec3(3, 4, 5), 200.0},
                                               {{Vec3(1, 1, 0), 150.0}, {Vec3(3, 4, 5), 200.0}},
                                               {{6, Vec3(7, 8, 9)}},
-                                              true}));
+                                              true,
+                                              180.5}));
   ASSERT_TRUE(reply);
   EXPECT_TRUE(reply->dropInspectors);
+  EXPECT_EQ(reply->chargeFrom, 180.5);
   ASSERT_EQ(reply->adopt.size(), 1u);
   EXPECT_EQ(reply->adopt[0].inspector, 6u);
   EXPECT_EQ(reply->adopt[0].place, Vec3(7, 8, 9));
@@ -43,13 +48,14 @@ TEST(SleiProtocol, EveryMessageRoundTrips) {
   EXPECT_EQ(reply->stops[1].time, 200.0);
   auto replyBytes =
       encode(Reply{4, 5, {Vec3(3, 4, 5), 200.0}, {{Vec3(1, 1, 0), 150.0}}, {}, false});
-  replyBytes.resize(replyBytes.size() - 1 - 4 - 8);  // no flag, no adoptions, a stop cut short
+  // No charger time, no flag, no adoptions, a stop cut short.
+  replyBytes.resize(replyBytes.size() - 8 - 1 - 4 - 8);
   EXPECT_FALSE(decodeReply(replyBytes));
   replyBytes = encode(Reply{4, 5, {Vec3(3, 4, 5), 200.0}, {}, {{6, Vec3(7, 8, 9)}}, false});
-  replyBytes.resize(replyBytes.size() - 1 - 8);  // an adoption cut short
+  replyBytes.resize(replyBytes.size() - 8 - 1 - 8);  // an adoption cut short
   EXPECT_FALSE(decodeReply(replyBytes));
   replyBytes = encode(Reply{4, 5, {Vec3(3, 4, 5), 200.0}, {}, {}, false});
-  replyBytes.back() = 2;  // not a flag
+  replyBytes[replyBytes.size() - 9] = 2;  // not a flag
   EXPECT_FALSE(decodeReply(replyBytes));
 
   Orders orders;
@@ -81,6 +87,8 @@ TEST(SleiProtocol, MalformedMessagesAreRejected) {
   bytes = encode(Report{2, true, 1.0, 1});
   bytes[4] = 7;  // a flag that is neither 0 nor 1
   EXPECT_FALSE(decodeReport(bytes));
+  EXPECT_FALSE(decodeReport(encode(Report{2, true, 1.0, 1, 1.5})));  // not a battery level
+  EXPECT_FALSE(decodeReport(encode(Report{2, true, 1.0, 1, std::nan("")})));
   // A list length larger than the message could hold.
   std::vector<uint8_t> huge{0xff, 0xff, 0xff, 0x7f};
   EXPECT_FALSE(decodePlan(huge));

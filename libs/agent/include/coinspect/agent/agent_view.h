@@ -23,6 +23,8 @@ struct AgentView {
   double timeLeft = 0.0;     // budget - missionTime
 
   Odometry odometry;
+  // Own battery level, a fraction of its capacity (FleetMember::battery); 1 when not limited.
+  double energy = 1.0;
   GimbalState gimbal;
   LidarView lidar;                              // explorers; empty otherwise
   std::vector<KeyFrameView> ownKeyFrames;       // new own key frames since the last decision

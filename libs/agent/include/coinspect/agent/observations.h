@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace coinspect::agent {
@@ -96,13 +97,27 @@ struct CameraInfo {
   double desiredMmPerPixel = 0.0;                 // r_des, mm/px
 };
 
+// A UAV's battery ([energy], doc/features.md, "Energy"): its spec sheet, known to the fleet.
+// capacity 0: not limited.
+struct BatterySpec {
+  double capacity = 0.0;     // s of flight from full to empty
+  double chargeTime = 0.0;   // s from empty to full at a station's charger
+  double chargeRange = 0.0;  // m from a live ground station within which it charges
+  bool limited() const { return capacity > 0.0; }
+};
+
 // A member of the fleet: names and roles are public (every unit reads the same network file).
 struct FleetMember {
+  FleetMember() = default;
+  FleetMember(std::string name, Role role, double detectRange = 0.0, BatterySpec battery = {})
+      : name(std::move(name)), role(role), detectRange(detectRange), battery(battery) {}
+
   std::string name;
   Role role = Role::Photographer;
   // m, an explorer's feature detector range in a feature mission (its spec sheet, known to the
   // fleet: [features] explorer_ranges); 0 otherwise.
   double detectRange = 0.0;
+  BatterySpec battery;
 };
 
 // A bounding box of the mission (CARIC publishes them to every unit).

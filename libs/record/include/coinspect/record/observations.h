@@ -166,9 +166,12 @@ enum class MissionEventKind : uint8_t {
   // A unit's reported activity (agent::toString(Activity), e.g. "exploring") from now on: each
   // unit's activity at the start of the mission clock, then every change while it is alive.
   ActivityChanged = 13,
+  // [energy]: a UAV starts / stops charging at a station; detail: its level ("35 %").
+  ChargeStart = 14,
+  ChargeEnd = 15,
 };
 // The last kind this build knows (readers reject larger values).
-inline constexpr MissionEventKind kLastMissionEventKind = MissionEventKind::ActivityChanged;
+inline constexpr MissionEventKind kLastMissionEventKind = MissionEventKind::ChargeEnd;
 const char* toString(MissionEventKind kind);
 
 // A mission event: start, end, no take-off, a unit's collision, failure or death, blackouts.

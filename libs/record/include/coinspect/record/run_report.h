@@ -22,6 +22,8 @@ struct RunReportUnit {
   uint64_t detected = 0;  // points in its own log
   double ownScore = 0.0;
   int64_t rejectedCommands = 0;
+  std::optional<double> lowestEnergy;  // [energy]: lowest battery level; absent: not limited
+  double chargedFor = 0.0;             // s spent charging at stations
 };
 
 struct RunReportTiming {

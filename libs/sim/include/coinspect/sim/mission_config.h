@@ -57,6 +57,15 @@ struct FeatureConfig {
   std::vector<std::string> priorityBoxes;
 };
 
+// [energy]: explorers fly on a battery that drains while airborne and charges near a ground
+// station (SLEI3D's energy limits; doc/features.md, "Energy").
+struct EnergyConfig {
+  double capacity = 0.0;     // s of flight from full to empty
+  double chargeTime = 0.0;   // s from empty to full
+  double chargeRange = 3.0;  // m from a live ground station within which a UAV charges
+  double startLevel = 1.0;   // fraction of the capacity at the start
+};
+
 struct MissionConfig {
   std::string source;    // the INI file, for error messages
   std::string scenario;  // generator name, scenario.ini or CARIC folder (resolved path)
@@ -80,7 +89,8 @@ struct MissionConfig {
   RunMode runMode = RunMode::Lockstep;
   double realtimeFactor = 1.0;  // realtime: simulated s per wall s
   Objective objective = Objective::Points;
-  FeatureConfig features;  // objective = features
+  FeatureConfig features;              // objective = features
+  std::optional<EnergyConfig> energy;  // [energy]; absent: batteries are not limited
   std::string strategy;
   std::vector<FaultSpec> faults;
   std::vector<BlackoutSpec> blackouts;

@@ -15,7 +15,8 @@ namespace coinspect::sim {
 struct MissionEvent {
   double time = 0.0;  // s since the simulation began
   std::string kind;   // mission-start, mission-end, no-takeoff, collision, death, fault,
-                      // blackout-start, blackout-end
+                      // blackout-start, blackout-end, charge-start, charge-end, and the
+                      // feature missions' kinds (mission_recorder.cpp maps them all)
   std::string unit;   // empty for mission-wide events
   std::string detail;
 };
@@ -27,8 +28,10 @@ struct UnitSummary {
   std::string deathCause;      // empty while alive
   double distanceFlown = 0.0;  // m, while alive
   size_t captures = 0;
-  size_t detected = 0;    // points in the unit's own log
-  double ownScore = 0.0;  // total of its own log
+  size_t detected = 0;                 // points in the unit's own log
+  double ownScore = 0.0;               // total of its own log
+  std::optional<double> lowestEnergy;  // [energy]: the lowest battery level (limited UAVs only)
+  double chargedFor = 0.0;             // s spent charging at stations
   long long rejectedCommands = 0;
 };
 

@@ -58,6 +58,7 @@ struct Report {
   bool boxFinished = false;    // explored, and every feature found in it handed out
   double remaining = 0.0;      // s, predicted time to finish the box (eq. 9)
   uint32_t meetingNumber = 0;  // which meeting this is (the station answers each one once)
+  double energy = 1.0;         // battery level (fraction; 1 when not limited): it charges first
 };
 
 // An inspector whose explorer is presumed lost, and where it should be waiting.
@@ -81,6 +82,8 @@ struct Reply {
   std::vector<Adoption> adopt;
   // The explorer had been presumed lost and its inspectors given to others: it forgets them.
   bool dropInspectors = false;
+  // [energy]: when the station's charger is free for it (another explorer may be charging).
+  double chargeFrom = 0.0;
 };
 
 // An explorer's orders to one of its inspectors: features appended to its list in order, and

@@ -181,6 +181,7 @@ class Slei3dStrategy : public agent::Strategy {
   uint32_t waitingFor_ = ~uint32_t{0};
   double waitingForTime_ = 0.0;
   std::optional<double> arrivedAt_;
+  double holdUntil_ = -1e300;  // [energy]: it stays where it is while an explorer charges
   // Its ground paths: around the boxes' footprints, the walls in the key frames it carries and
   // where it found its way blocked.
   std::unique_ptr<planning::GroundGrid> ground_;
@@ -204,6 +205,14 @@ class Slei3dStrategy : public agent::Strategy {
   std::optional<Vec3> earlyPlace_;     // a stop to catch the station at before the meeting
   double earlyBy_ = 0.0;               // when the station should be there
   bool earlyTried_ = false;            // since the last reply
+  // [energy]: after a reply it charges above the station before it goes on (the station waits);
+  // given up when the level has not risen for a while (no charger in reach).
+  bool charging_ = false;
+  double chargeFrom_ = 0.0;          // the charger is free for it from then (the reply says)
+  double chargeLevel_ = 0.0;         // the level when it last rose
+  double chargeRoseAt_ = 0.0;        // and when
+  Vec3 stationSeen_ = Vec3::Zero();  // where its station last was in sight
+  agent::AgentCommand charge(const agent::AgentView& view, uint32_t station);
   uint32_t meetingNumber_ = 1;
   bool explorationFinished_ = false;
   std::optional<Vec3> exploreAim_;
