@@ -11,6 +11,13 @@ namespace coinspect::strategies::runtime {
 namespace {
 
 constexpr double kNever = -std::numeric_limits<double>::infinity();
+// m^3: free space at the full clearance smaller than this around a unit is a pocket it is
+// trapped in (a 5 m alley's centre line, a few cells wide).
+constexpr double kPocketVolume = 100.0;
+// s a unit must have been trapped before it flies out at its own sphere's clearance: a pocket
+// often opens again as the map fills in (then the unit goes on at the full clearance), and
+// flying closer to surfaces is for a unit that is stuck.
+constexpr double kTrappedPatience = 10.0;
 
 }  // namespace
 
@@ -49,6 +56,15 @@ planning::PathSearchOptions Flight::ownSphereOptions(const mapping::VoxelGrid& g
   auto out = searchOptions(grid);
   out.clearance = options_.radius + 0.5 * grid.resolution() * std::sqrt(3.0);
   return out;
+}
+
+bool Flight::trapped(const planning::PathResult& result, const mapping::VoxelGrid& grid) const {
+  if (result.status == planning::PathStatus::StartBlocked) return true;
+  // NoPath after a small flood: the unit's own free space at the full clearance is a pocket
+  // (from open space the search floods far more before giving up, or runs out of budget).
+  const double cell = std::pow(grid.resolution(), 3);
+  return result.status == planning::PathStatus::NoPath &&
+         static_cast<double>(result.expansions) * cell < kPocketVolume;
 }
 
 size_t Flight::priorityOf(const std::string& name) const {
@@ -100,6 +116,7 @@ bool Flight::plan(const Vec3& from, double speed, const RobotMap& map,
   std::vector<Vec3> points{from};
   std::vector<size_t> marks{0};
   Vec3 current = from;
+  bool escaping = false;
   for (size_t k = 0; k < route_.size(); ++k) {
     Vec3 target = route_[k];
     if (!planning::cellTraversable(grid, grid.cellOf(target), options)) {
@@ -117,7 +134,23 @@ bool Flight::plan(const Vec3& from, double speed, const RobotMap& map,
       auto legOptions = options;
       legOptions.maxExpansions =
           points.size() == 1 ? options_.maxExpansions : options_.maxExpansions / 10;
-      const auto result = searcher_.thetaStar(grid, current, target, legOptions);
+      auto result = searcher_.thetaStar(grid, current, target, legOptions);
+      if (points.size() == 1) {
+        if (!trapped(result, grid)) {
+          trappedSince_.reset();
+        } else if (!trappedSince_) {
+          trappedSince_ = lastTime_;
+        } else if (lastTime_ - *trappedSince_ >= kTrappedPatience) {
+          // No way out of where the unit is at the full clearance for a while: a narrow place
+          // it flew into closed around it as it was mapped (an explorer spent the last 860 s of
+          // a mission in a 5 m alley under unseen space that way). It is there, so its own
+          // sphere fits: out at that clearance, still preferring the middle of free space
+          // (softClearance).
+          legOptions.clearance = ownSphereOptions(grid).clearance;
+          result = searcher_.thetaStar(grid, current, target, legOptions);
+          escaping = result.status == planning::PathStatus::Found;
+        }
+      }
       if (result.status != planning::PathStatus::Found) continue;  // unreachable: skip it
       for (const auto& p : result.points)
         if ((p - current).norm() > 1e-6) leg.push_back(p);
@@ -136,6 +169,7 @@ bool Flight::plan(const Vec3& from, double speed, const RobotMap& map,
   limits.startSpeed = speed;
   profile_ = PathProfile(points, limits);
   routeMark_ = marks;
+  escaping_ = escaping;
   COINSPECT_ASSERT(profile_.points().size() == routeMark_.size());
   checkedGridVersion_ = map.gridVersion();
   return true;
@@ -151,7 +185,9 @@ void Flight::planAround(const Vec3& from, double speed, const RobotMap& map,
 
 bool Flight::remainingPathClear(const RobotMap& map) const {
   const auto& grid = map.grid();
-  const auto options = searchOptions(grid);
+  // A way out of a trapped place is checked at the clearance it was planned with (at the full
+  // one it would be planned again at every rebuild, the same way).
+  const auto options = escaping_ ? ownSphereOptions(grid) : searchOptions(grid);
   const auto& points = profile_.points();
   const size_t next = profile_.nextVertex();
   if (next >= points.size()) return true;

@@ -214,6 +214,79 @@ TEST(Flight, NeverSendsASetpointFarFromTheVehicleOrAcrossAWall) {
   EXPECT_EQ(flight.guardedSetpoints(), 2u);
 }
 
+// A corridor along y between walls x = -halfWidth(y) and x = +halfWidth(y), 0 <= z <= 12,
+// |y| <= 8, under a roof at z = 12, mapped; unknown space is free (the test is about the walls).
+RobotMap corridorMap(double (*halfWidth)(double y)) {
+  RobotMap map(mapOptions(UnknownSpace::Free), {makeBox({0, 0, 6}, {6, 16, 12})}, 0.0);
+  agent::AgentView scan;
+  for (const double side : {-1.0, 1.0}) {
+    auto frame = std::make_shared<agent::KeyFrame>();
+    frame->producer = "scout";
+    frame->position = Vec3(0, 0, 6);
+    for (double y = -8.0; y <= 8.0; y += 0.25)
+      for (double z = 0.0; z <= 12.0; z += 0.25)
+        frame->points.emplace_back(static_cast<float>(side * halfWidth(y)), static_cast<float>(y),
+                                   static_cast<float>(z));
+    scan.receivedKeyFrames.push_back(frame);
+  }
+  auto roof = std::make_shared<agent::KeyFrame>();
+  roof->producer = "scout";
+  roof->position = Vec3(0, 0, 6);
+  for (double y = -8.0; y <= 8.0; y += 0.25)
+    for (double x = -halfWidth(y); x <= halfWidth(y); x += 0.25)
+      roof->points.emplace_back(static_cast<float>(x), static_cast<float>(y), 12.0f);
+  scan.receivedKeyFrames.push_back(roof);
+  map.update(scan);
+  map.refresh(0.0, true);
+  return map;
+}
+
+// Flies from (0, 0, 5) to (0, 14, 6), beyond the corridor's end, and checks it got there without
+// coming closer to a wall than its own radius.
+void leaveCorridor(const RobotMap& map, double (*halfWidth)(double y)) {
+  FlightOptions options;
+  options.takeoffHeight = 1.0;
+  Flight flight(options, {"me"}, 0);
+  PerfectVehicle vehicle;
+  vehicle.view.name = "me";
+  vehicle.view.odometry.position = Vec3(0, 0, 5);
+  const Vec3 goal(0, 14, 6);
+  flight.goTo(goal, 2.0);
+  double nearestWall = 1e9;
+  for (int i = 0; i < 600 && !flight.done(); ++i) {
+    vehicle.apply(flight.step(vehicle.view, map), 0.1);
+    const Vec3 p = vehicle.view.odometry.position;
+    if (std::abs(p.y()) <= 8.0)
+      nearestWall = std::min(nearestWall, halfWidth(p.y()) - std::abs(p.x()));
+  }
+  EXPECT_TRUE(flight.done());
+  EXPECT_FALSE(flight.failed());
+  EXPECT_LT((vehicle.view.odometry.position - goal).norm(), 0.6);
+  EXPECT_GE(nearestWall, options.radius);
+}
+
+TEST(Flight, LeavesAPlaceNarrowerThanItsClearanceAtTheClearanceOfItsOwnSphere) {
+  // A unit is closer than radius + margin to a wall wherever it is in a 3 m corridor, with no
+  // clear cell within the snap radius: it used to fail every plan and stay there for good.
+  const auto narrow = [](double) { return 1.5; };
+  const auto map = corridorMap(narrow);
+  const auto& grid = map.grid();
+  ASSERT_LT(grid.clearance(grid.cellOf({0, 0, 6})), Flight({}, {"me"}, 0).requiredClearance(grid));
+  leaveCorridor(map, narrow);
+}
+
+TEST(Flight, LeavesAPocketOfItsClearanceAtTheClearanceOfItsOwnSphere) {
+  // 5.5 m wide in the middle, where the unit has its clearance, 3 m at both ends, where it does
+  // not: a pocket (an explorer spent most of a mission in one, every plan out failing).
+  const auto pocket = [](double y) { return std::abs(y) <= 5.0 ? 2.75 : 1.5; };
+  const auto map = corridorMap(pocket);
+  const auto& grid = map.grid();
+  const double required = Flight({}, {"me"}, 0).requiredClearance(grid);
+  ASSERT_GE(grid.clearance(grid.cellOf({0, 0, 5})), required);  // where it starts
+  ASSERT_LT(grid.clearance(grid.cellOf({0, 7, 6})), required);
+  leaveCorridor(map, pocket);
+}
+
 // Units "first" and "second" (fleet order) by a small box; unit `self` has climbed 1 m from
 // (0, 22, 4), well inside the map's region, and is about to fly.
 struct TwoUnits {

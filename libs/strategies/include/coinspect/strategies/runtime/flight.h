@@ -5,7 +5,10 @@
 // path search on the RobotMap's grid, at the clearance of the robot's radius plus a margin plus
 // the grid's own uncertainty; the polyline is flown by a PathProfile. The remaining path is
 // checked again whenever the grid is rebuilt, and planned again from where the robot is when new
-// map information blocks it. Without anything to do the unit hovers where it stopped.
+// map information blocks it. Without anything to do the unit hovers where it stopped. A unit
+// whose own free space at that clearance is a pocket (no path out of a few tens of cubic metres,
+// or no clear cell near it at all: a narrow place that closed around it as it was mapped) for
+// 10 s plans its way out at the clearance of its own sphere instead.
 //
 // Neighbours in line of sight (their odometry is in the view) are deconflicted by priority (fleet
 // order: the lower index goes first): a unit holds while a higher-priority neighbour is within
@@ -99,6 +102,8 @@ class Flight {
   void planAround(const Vec3& from, double speed, const RobotMap& map,
                   const std::vector<planning::AvoidSphere>& blockers);
   bool remainingPathClear(const RobotMap& map) const;
+  // The search from the unit's own position found no way out of where it is.
+  bool trapped(const planning::PathResult& result, const mapping::VoxelGrid& grid) const;
   void dropReachedWaypoints();  // the route keeps only waypoints the profile has not reached
   // `blockers` (optional): lower-priority units this unit holds for, as spheres to plan around.
   agent::AgentSetpoint deconflict(const agent::AgentView& view, const RobotMap& map,
@@ -119,9 +124,11 @@ class Flight {
   Phase phase_ = Phase::Takeoff;
   bool started_ = false;
   Vec3 hoverPoint_ = Vec3::Zero();
-  std::vector<Vec3> route_;          // what is left to visit (the goal is a route of one)
-  std::optional<Vec3> reachedGoal_;  // the route's last waypoint, while holding where it ended
-  std::vector<size_t> routeMark_;    // per profile vertex: route waypoints reached there
+  std::vector<Vec3> route_;             // what is left to visit (the goal is a route of one)
+  std::optional<Vec3> reachedGoal_;     // the route's last waypoint, while holding where it ended
+  std::vector<size_t> routeMark_;       // per profile vertex: route waypoints reached there
+  bool escaping_ = false;               // the profile leaves a trap at the own-sphere clearance
+  std::optional<double> trappedSince_;  // plans from where it was found no way out since then
   double speed_ = 1.0;
   PathProfile profile_;
   uint64_t checkedGridVersion_ = 0;
