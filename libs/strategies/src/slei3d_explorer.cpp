@@ -380,6 +380,19 @@ double Slei3dStrategy::predictRemaining(const agent::AgentView& view) const {
   planning::CompletionPredictionOptions options;
   options.explorerSpeed = options_.speed;
   options.maxRemaining = std::max(options.minRemaining, options_.maxMeetingLead);
+  if (in.exploredVolume == 0.0 && !explorationFinished_ && !sweepRoute_.empty()) {
+    // Nothing swept yet: eq. 9 has nothing to extrapolate from (the reference's floor, 50 s,
+    // is too short to reach a far first stop and come back: an explorer met its station every
+    // 35 s for 400 s of a slei-a run, sweeping nothing). The planned sweep's flying time.
+    std::vector<Vec3> stops;
+    for (const auto& stop : sweepRoute_)
+      stops.push_back(stop.position);
+    const double tour = kTravelFactor *
+                            planning::straightTourLength(view.odometry.position, stops, false) /
+                            options_.speed +
+                        kTurnTime * static_cast<double>(stops.size());
+    return std::clamp(tour, options.minRemaining, options.maxRemaining);
+  }
   return planning::predictCompletion(in, options).remaining;
 }
 
