@@ -103,6 +103,35 @@ double straightTourLength(const Vec3& start, const std::vector<Vec3>& stops, boo
   return length;
 }
 
+std::vector<size_t> deadlineBoundedTour(const Vec3& start, double now,
+                                        const std::vector<Vec3>& stops, const Vec3& meeting,
+                                        double deadline, double speed, double travelFactor) {
+  const auto flight = [&](const Vec3& a, const Vec3& b) {
+    return travelFactor * (a - b).norm() / speed;
+  };
+  std::vector<uint8_t> used(stops.size(), 0);
+  std::vector<size_t> tour;
+  Vec3 from = start;
+  double time = now;
+  while (true) {
+    size_t best = stops.size();
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < stops.size(); ++i) {
+      if (used[i]) continue;
+      const double distance = (stops[i] - from).squaredNorm();
+      if (distance >= bestDistance) continue;
+      if (time + flight(from, stops[i]) + flight(stops[i], meeting) > deadline) continue;
+      bestDistance = distance;
+      best = i;
+    }
+    if (best == stops.size()) return tour;
+    used[best] = 1;
+    time += flight(from, stops[best]);
+    from = stops[best];
+    tour.push_back(best);
+  }
+}
+
 std::array<Vec3, 4> meetingCorners(const Vec3& boxMin, const Vec3& boxMax,
                                    const MeetingCornerOptions& options) {
   const char* const source = "meeting corners";

@@ -483,5 +483,27 @@ TEST(SleiMeetingOrder, RejectsBadProblems) {
   EXPECT_MENTIONS(messageOf([&] { exactMeetingOrder(problem); }), "exact limit");
 }
 
+// FF3E's bound: nearest first, each stop only if the meeting is still reached from it in time.
+TEST(DeadlineBoundedTour, KeepsOnlyStopsFromWhichTheMeetingIsReachedInTime) {
+  const Vec3 origin = Vec3::Zero();
+  const std::vector<Vec3> stops{Vec3(1, 0, 0), Vec3(10, 0, 0), Vec3(2, 0, 0)};
+  const double unbounded = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(deadlineBoundedTour(origin, 0.0, stops, origin, unbounded, 1.0),
+            (std::vector<size_t>{0, 2, 1}));
+  // By 10 s: (1, 0, 0) at 1 s, back by 2; (2, 0, 0) at 2 s, back by 4; (10, 0, 0) at 10 s,
+  // back by 20: dropped.
+  EXPECT_EQ(deadlineBoundedTour(origin, 0.0, stops, origin, 10.0, 1.0),
+            (std::vector<size_t>{0, 2}));
+  // The same at half the speed with a travel factor of 2 is four times as long: none by 7 s
+  // (the nearest is back by 8), the first by 8.
+  EXPECT_TRUE(deadlineBoundedTour(origin, 0.0, stops, origin, 7.0, 0.5, 2.0).empty());
+  EXPECT_EQ(deadlineBoundedTour(origin, 0.0, stops, origin, 8.0, 0.5, 2.0),
+            (std::vector<size_t>{0}));
+  // A nearer stop away from the meeting is skipped for one on the way.
+  const std::vector<Vec3> sides{Vec3(2.5, 0, 0), Vec3(-3, 0, 0)};
+  EXPECT_EQ(deadlineBoundedTour(origin, 100.0, sides, Vec3(-4, 0, 0), 108.0, 1.0),
+            (std::vector<size_t>{1}));
+}
+
 }  // namespace
 }  // namespace coinspect::planning

@@ -157,10 +157,17 @@ void Slei3dStrategy::readStatus(const agent::AgentView& view) {
   }
 }
 
-bool Slei3dStrategy::planExploration(const agent::AgentView& view) {
+Slei3dStrategy::Plan Slei3dStrategy::planExploration(const agent::AgentView& view) {
   lastPlan_ = view.time;
   const auto& box = boxes_[static_cast<size_t>(box_)];
   const Vec3 here = view.odometry.position;
+  // Where and by when it must leave what it does for its station meeting.
+  const Vec3 meeting(stationMeeting_.place.x(), stationMeeting_.place.y(),
+                     groundZ_ + options_.meetHeight);
+  const double deadline = options_.deadlineBound && stationMeeting_.time < kNoMeeting
+                              ? stationMeeting_.time - kLeaveMargin
+                              : std::numeric_limits<double>::infinity();
+  bool notInTime = false;  // something left to explore, not before the meeting
   const auto& grid = map_->grid();
   const double clearance = flight_->requiredClearance(grid);
   // The detector first: the mapped surface of the box it has not passed close to.
@@ -196,25 +203,24 @@ bool Slei3dStrategy::planExploration(const agent::AgentView& view) {
     // Only patches with a viewpoint count as left to sweep (eq. 9's explored share): a box
     // with surface no safe place sees would never look explored.
     openPatches_ = open.size() - uncoverable.size();
-    // Flown nearest first from where the explorer is (a greedy tour).
-    Vec3 from = here;
-    while (!views.empty()) {
-      const auto next =
-          std::min_element(views.begin(), views.end(), [&](const auto& a, const auto& b) {
-            return (a.position - from).squaredNorm() < (b.position - from).squaredNorm();
-          });
-      SweepStop stop{next->position, next->target, {}};
-      for (const uint32_t i : next->covered)
+    // Flown nearest first from where the explorer is (a greedy tour), only as far as it still
+    // reaches its station meeting in time (FF3E's bound); the rest waits for the next plan.
+    std::vector<Vec3> positions;
+    for (const auto& v : views)
+      positions.push_back(v.position);
+    for (const size_t k : planning::deadlineBoundedTour(here, view.time, positions, meeting,
+                                                        deadline, options_.speed, kTravelFactor)) {
+      SweepStop stop{views[k].position, views[k].target, {}};
+      for (const uint32_t i : views[k].covered)
         stop.keys.push_back(open[i].key);
-      from = next->position;
       sweepRoute_.push_back(std::move(stop));
-      views.erase(next);
     }
     if (!sweepRoute_.empty()) {
       exploreAim_ = sweepRoute_.front().target;
       flight_->goTo(sweepRoute_.front().position, options_.speed);
-      return true;
+      return Plan::Flying;
     }
+    notInTime = !views.empty();
   }
   // Then the parts of the box the LiDAR has not mapped: FUEL-style frontier viewpoints.
   const auto bounds = runtime::boxBounds(box);
@@ -236,12 +242,19 @@ bool Slei3dStrategy::planExploration(const agent::AgentView& view) {
   for (const auto* cluster : order) {
     const auto viewpoint = star::bestRingViewpoint(*cluster, grid, ring);
     if (!viewpoint) continue;
+    const Vec3& at = viewpoint->pose.position;
+    if (view.time + straightTime(here, at, options_.speed) +
+            straightTime(at, meeting, options_.speed) >
+        deadline) {
+      notInTime = true;
+      continue;
+    }
     toFrontier_ = true;
     exploreAim_ = cluster->centroid;
-    flight_->goTo(viewpoint->pose.position, options_.speed);
-    return true;
+    flight_->goTo(at, options_.speed);
+    return Plan::Flying;
   }
-  return false;
+  return notInTime ? Plan::NotBeforeMeeting : Plan::Nothing;
 }
 
 // The stop of the station's schedule where the explorer, flying there now, would find the
@@ -789,8 +802,17 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
       }
       const bool idle = sweepRoute_.empty() && !toFrontier_;
       const bool due = view.time - lastPlan_ >= (idle ? 0.5 : kReplanPeriod);
-      if (!explorationFinished_ && due && !planExploration(view) && flight_->done())
-        explorationFinished_ = true;  // no open patch nor frontier with a viewpoint
+      if (!explorationFinished_ && due) {
+        const Plan plan = planExploration(view);
+        if (plan == Plan::Nothing && flight_->done())
+          explorationFinished_ = true;  // no open patch nor frontier with a viewpoint
+        if (plan == Plan::NotBeforeMeeting) {
+          // Nothing it can do and still be on time: on to the meeting (FF3E's bound; no
+          // hand-out is under way while it explores).
+          phase_ = ExplorerPhase::ToStation;
+          goToStation(view, stationMeeting_.place);
+        }
+      }
       aim = exploreAim_;
       command.activity = agent::Activity::Exploring;
       break;

@@ -251,6 +251,7 @@ SleiOptions readOptions(const Config& config) {
   o.fixInterval = number("fix_interval", o.fixInterval, 10.0, 3600.0);
   o.plan.evenSplit = config.getBool("slei3d", "even_split", o.plan.evenSplit);
   o.priorityFirst = config.getBool("slei3d", "priority_first", o.priorityFirst);
+  o.deadlineBound = config.getBool("slei3d", "deadline_bound", o.deadlineBound);
   o.unknownBoxMargin = number("unknown_box_margin", o.unknownBoxMargin, 0.0, 10.0);
   o.plan.stationSpeed = number("station_speed", o.plan.stationSpeed, 0.1, 20.0);
   return o;

@@ -84,6 +84,20 @@ double straightTourLength(const Vec3& start, const std::vector<Vec3>& stops,
                           bool horizontalOnly = true);
 
 // ---------------------------------------------------------------------------------------------
+// FF3E's bound: exploration that still reaches the next meeting on time
+
+// The stops an explorer at `start` at time `now` can fly, nearest first from the last one, such
+// that from each it still reaches `meeting` by `deadline` (the paper's Alg. 1 bounds its
+// frontier sequences by the meeting time; this is its greedy form, replanned in receding
+// horizon by the caller). A stop that does not fit is skipped (a later, nearer-the-meeting one
+// may). Times: straight lines at `speed`, times `travelFactor` (paths are longer). Returns the
+// indices of the stops kept, in flying order; all of them, nearest first, when `deadline` is
+// infinite.
+std::vector<size_t> deadlineBoundedTour(const Vec3& start, double now,
+                                        const std::vector<Vec3>& stops, const Vec3& meeting,
+                                        double deadline, double speed, double travelFactor = 1.0);
+
+// ---------------------------------------------------------------------------------------------
 // Meeting place: a corner of the box footprint
 
 struct MeetingCornerOptions {

@@ -53,6 +53,9 @@ struct SleiOptions {
   SleiVariant variant = SleiVariant::Slei3d;
   double fixInterval = 120.0;  // s between an explorer's returns to the static station (slei-fix)
   bool priorityFirst = true;   // high-priority features allocated first (off: like the others)
+  // FF3E's bound, greedy form: explore only what still lets it reach its station meeting on
+  // time, and leave at once when nothing fits (off: nearest first, leave by the clock).
+  bool deadlineBound = false;
   // m around the boxes where unknown space blocks paths (runtime::RobotMapOptions::boxMargin).
   // The generated SLEI scenes' boxes enclose their structures with 1 m to spare; 2 m closed
   // slei-c's 6 m streets to every UAV that had not mapped them.
@@ -126,7 +129,10 @@ class Slei3dStrategy : public agent::Strategy {
   agent::AgentCommand decideExplorer(const agent::AgentView& view);
   void collectDetections(const agent::AgentView& view);
   void readStatus(const agent::AgentView& view);
-  bool planExploration(const agent::AgentView& view);
+  // What an exploration plan found: something to fly to now, nothing left to explore (of what
+  // has a viewpoint), or something left that it cannot fly before its station meeting.
+  enum class Plan { Flying, Nothing, NotBeforeMeeting };
+  Plan planExploration(const agent::AgentView& view);
   void markSwept(const agent::AgentView& view);
   void followSweep(const agent::AgentView& view);
   void planHandout(const agent::AgentView& view);
