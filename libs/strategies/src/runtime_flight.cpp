@@ -128,6 +128,7 @@ bool Flight::plan(const Vec3& from, double speed, const RobotMap& map,
     std::vector<Vec3> leg;
     if (planning::segmentTraversable(grid, current, target, options)) {
       leg.push_back(target);
+      if (points.size() == 1) trappedSince_.reset();  // a straight way on from where it is
     } else {
       // Legs between nearby waypoints get a small search budget: a waypoint walled off from
       // the last one is skipped rather than paid for with a flood of the whole grid.
