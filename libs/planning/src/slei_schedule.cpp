@@ -29,6 +29,7 @@ void validateCompletion(const CompletionInputs& inputs,
   requireNonNegative(source, "featuresScanned", inputs.featuresScanned);
   requireNonNegative(source, "featuresInspected", inputs.featuresInspected);
   requireNonNegative(source, "timeInBox", inputs.timeInBox);
+  requireNonNegative(source, "plannedSweepTime", inputs.plannedSweepTime);
   requireNonNegative(source, "closingTourLength", inputs.closingTourLength);
   if (!std::isfinite(inputs.now) || !std::isfinite(inputs.earliestInspectorFinish)) {
     throw InputError(source, "now / earliestInspectorFinish", "must be finite");
@@ -58,7 +59,10 @@ CompletionPrediction unclampedCompletion(const CompletionInputs& in,
     return prediction;
   }
   if (in.exploredVolume == 0.0) {
-    prediction.unclamped = options.minRemaining;
+    // The reference's floor (50 s) is too short to reach a far first stop and come back: an
+    // explorer met its station every 35 s for 400 s of a slei-a run, sweeping nothing. The
+    // planned sweep's flying time when there is one.
+    prediction.unclamped = in.plannedSweepTime > 0.0 ? in.plannedSweepTime : options.minRemaining;
     prediction.rule = CompletionRule::NothingExplored;
     return prediction;
   }

@@ -48,6 +48,26 @@ TEST(SleiCompletion, NothingExploredGivesTheLowerClamp) {
   EXPECT_DOUBLE_EQ(p.remaining, 50.0);
 }
 
+TEST(SleiCompletion, NothingExploredTakesThePlannedSweepsTimeClamped) {
+  auto inputs = exploring(1000.0, 0.0, 0, 0, 30.0);
+  inputs.plannedSweepTime = 200.0;
+  CompletionPrediction p = predictCompletion(inputs);
+  EXPECT_EQ(p.rule, CompletionRule::NothingExplored);
+  EXPECT_DOUBLE_EQ(p.remaining, 200.0);
+  inputs.plannedSweepTime = 20.0;  // a sweep shorter than the floor: the floor
+  EXPECT_DOUBLE_EQ(predictCompletion(inputs).remaining, 50.0);
+  inputs.plannedSweepTime = 5000.0;
+  p = predictCompletion(inputs);
+  EXPECT_DOUBLE_EQ(p.unclamped, 5000.0);
+  EXPECT_DOUBLE_EQ(p.remaining, 600.0);
+  inputs.plannedSweepTime = -1.0;
+  EXPECT_MENTIONS(messageOf([&] { predictCompletion(inputs); }), "plannedSweepTime");
+  // Explored volume, however little, is extrapolated as before.
+  inputs = exploring(1000.0, 250.0, 0, 0, 100.0);
+  inputs.plannedSweepTime = 200.0;
+  EXPECT_DOUBLE_EQ(predictCompletion(inputs).unclamped, 300.0);
+}
+
 TEST(SleiCompletion, WithoutFeaturesExtrapolatesTheVolume) {
   // A quarter explored in 100 s: three more quarters take 300 s.
   const CompletionPrediction p = predictCompletion(exploring(1000.0, 250.0, 0, 0, 100.0));

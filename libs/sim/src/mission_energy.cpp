@@ -1,8 +1,8 @@
 // [energy]: batteries drain while airborne and charge near a live ground station (SLEI3D's
 // energy limits, doc/features.md "Energy"). Updated at the monitor rate, on the mission clock.
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "mission_impl.h"
 

@@ -390,22 +390,18 @@ double Slei3dStrategy::predictRemaining(const agent::AgentView& view) const {
   in.earliestInspectorFinish = std::isfinite(earliest) ? earliest : view.time;
   in.closingTourLength = planning::straightTourLength(view.odometry.position, ends);
   in.now = view.time;
-  planning::CompletionPredictionOptions options;
-  options.explorerSpeed = options_.speed;
-  options.maxRemaining = std::max(options.minRemaining, options_.maxMeetingLead);
-  if (in.exploredVolume == 0.0 && !explorationFinished_ && !sweepRoute_.empty()) {
-    // Nothing swept yet: eq. 9 has nothing to extrapolate from (the reference's floor, 50 s,
-    // is too short to reach a far first stop and come back: an explorer met its station every
-    // 35 s for 400 s of a slei-a run, sweeping nothing). The planned sweep's flying time.
+  if (in.exploredVolume == 0.0 && !sweepRoute_.empty()) {
     std::vector<Vec3> stops;
     for (const auto& stop : sweepRoute_)
       stops.push_back(stop.position);
-    const double tour = kTravelFactor *
-                            planning::straightTourLength(view.odometry.position, stops, false) /
-                            options_.speed +
-                        kTurnTime * static_cast<double>(stops.size());
-    return std::clamp(tour, options.minRemaining, options.maxRemaining);
+    in.plannedSweepTime = kTravelFactor *
+                              planning::straightTourLength(view.odometry.position, stops, false) /
+                              options_.speed +
+                          kTurnTime * static_cast<double>(stops.size());
   }
+  planning::CompletionPredictionOptions options;
+  options.explorerSpeed = options_.speed;
+  options.maxRemaining = std::max(options.minRemaining, options_.maxMeetingLead);
   return planning::predictCompletion(in, options).remaining;
 }
 

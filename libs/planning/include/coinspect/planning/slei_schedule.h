@@ -34,6 +34,9 @@ struct CompletionInputs {
   int featuresScanned = 0;      // N_s, features the explorer detected in this box
   int featuresInspected = 0;    // N_r, reported inspected by its inspectors since the box began
   double timeInBox = 0.0;       // s, t_e = now - the moment the explorer reached the box
+  // s, the flying time of the sweep it has planned (0: none); read when nothing is explored
+  // yet, where eq. 9 has nothing to extrapolate from.
+  double plannedSweepTime = 0.0;
   bool explorationFinished = false;
   // Only read when explorationFinished:
   double earliestInspectorFinish = 0.0;  // s, absolute: the soonest planned end of an inspector
@@ -43,7 +46,7 @@ struct CompletionInputs {
 
 // Which case of the prediction gave the time (see predictCompletion).
 enum class CompletionRule {
-  NothingExplored,          // V_e = 0: nothing to extrapolate from
+  NothingExplored,          // V_e = 0: the planned sweep's time, else the lower clamp
   VolumeExtrapolation,      // no features, or all predicted features already scanned
   UninspectedFallback,      // features still to find, none inspected yet
   InspectionExtrapolation,  // features still to find, progress measured by inspections
