@@ -82,6 +82,29 @@ bool GroundGrid::clearLine(const Vec2& a, const Vec2& b) const {
   return true;
 }
 
+Vec2 GroundGrid::nearestReachable(const Vec2& start, const Vec2& goal) const {
+  Eigen::Vector2i from;
+  if (!nearestFree(start, &from)) return goal;
+  std::vector<uint8_t> seen(blocked_.size(), 0);
+  std::vector<Eigen::Vector2i> queue = {from};
+  seen[index(from.x(), from.y())] = 1;
+  Vec2 best = centre(from.x(), from.y());
+  double bestDistance = (best - goal).squaredNorm();
+  for (size_t next = 0; next < queue.size(); ++next) {
+    const Eigen::Vector2i c = queue[next];
+    const double d = (centre(c.x(), c.y()) - goal).squaredNorm();
+    if (d < bestDistance) bestDistance = d, best = centre(c.x(), c.y());
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int x = c.x() + dx, y = c.y() + dy;
+        if (!freeCell(x, y) || seen[index(x, y)]) continue;
+        seen[index(x, y)] = 1;
+        queue.emplace_back(x, y);
+      }
+  }
+  return best;
+}
+
 std::vector<Vec2> GroundGrid::path(const Vec2& start, const Vec2& goal) const {
   Eigen::Vector2i s, g;
   if (!nearestFree(start, &s) || !nearestFree(goal, &g)) return {};

@@ -66,5 +66,23 @@ TEST(GroundPath, NoPathWhenWalledInAndBlockedEndsMoveToFreeCells) {
   EXPECT_THROW(GroundGrid(Vec2(0, 0), Vec2(0, 5), 0.5), InputError);
 }
 
+TEST(GroundPath, NearestReachableStopsOutsideAWalledPlace) {
+  GroundGrid grid(Vec2(0, 0), Vec2(30, 30), 0.5);
+  // A 10 x 10 m block: its centre is 5 m from any free cell, beyond path()'s 3 m.
+  grid.blockRectangle(Vec2(15, 15), Vec2(1, 0), Vec2(5, 5), 0.0);
+  const Vec2 near = grid.nearestReachable(Vec2(2, 15), Vec2(15, 15));
+  EXPECT_FALSE(grid.blocked(near));
+  EXPECT_LT((near - Vec2(15, 15)).norm(), 5.6);
+  EXPECT_GT((near - Vec2(15, 15)).norm(), 4.9);
+  // A free goal is its own nearest cell (the centre of its cell).
+  EXPECT_LT((grid.nearestReachable(Vec2(2, 2), Vec2(25.2, 3.1)) - Vec2(25.2, 3.1)).norm(), 0.36);
+  // Walled off: the nearest place on the start's side of the wall, not the one behind it.
+  GroundGrid split(Vec2(0, 0), Vec2(20, 20), 0.5);
+  split.blockRectangle(Vec2(10, 10), Vec2(1, 0), Vec2(10, 0.5), 0.0);  // a wall along y = 10
+  const Vec2 side = split.nearestReachable(Vec2(5, 5), Vec2(5, 12));
+  EXPECT_LT(side.y(), 9.5);
+  EXPECT_GT(side.y(), 8.5);
+}
+
 }  // namespace
 }  // namespace coinspect::planning

@@ -84,16 +84,46 @@ void Slei3dStrategy::enterBox(const agent::AgentView& view, int32_t box) {
     phase_ = ExplorerPhase::Done;
     return;
   }
-  const Vec3 corner = boxCorner(boxes_, static_cast<size_t>(box), options_.plan.cornerOffset,
-                                groundZ_ + options_.exploreHeight, view.odometry.position);
   boxFrom_ = view.odometry.position;
-  phase_ = ExplorerPhase::ToBox;
-  flight_->goTo(corner, options_.speed);
+  if (options_.unknownWorkspace) {
+    // A part's corner may stand inside a structure: it explores from where it is (its frontiers
+    // and surface lead it into the box).
+    phase_ = ExplorerPhase::Exploring;
+    lastPlan_ = -1e300;
+  } else {
+    phase_ = ExplorerPhase::ToBox;
+    flight_->goTo(boxEntry(box, boxFrom_), options_.speed);
+  }
   // Every inspector of the subgroup waits off the new corner once its list is done; it learns
   // of it at its next orders (caric-team's inspectors keep waiting at the relay).
   if (options_.variant == SleiVariant::Team) return;
   for (size_t k = 0; k < inspectors_.size(); ++k)
     inspectors_[k].waitAt = waitPointNear(box, boxFrom_, k);
+}
+
+Vec3 Slei3dStrategy::boxEntry(int32_t box, const Vec3& from) const {
+  return boxCorner(boxes_, static_cast<size_t>(box), options_.plan.cornerOffset,
+                   groundZ_ + options_.exploreHeight, from);
+}
+
+std::vector<agent::BoxView> Slei3dStrategy::remainderParts() const {
+  if (!options_.unknownWorkspace || fixedRegions() || box_ < 0) return {};
+  std::vector<agent::BoxView> out;
+  for (const auto& part : octreeChildren(boxes_[static_cast<size_t>(box_)], options_.leafEdge)) {
+    const auto patches =
+        planning::groupSurface(map_->surfaceNearBoxes({part}, kSurfaceNearBox), kPatchSize);
+    bool open = std::any_of(patches.begin(), patches.end(),
+                            [&](const auto& patch) { return !swept_.count(patch.key); });
+    if (!open) {
+      const auto bounds = runtime::boxBounds(part);
+      const auto clusters = map_->map().frontierClusters(bounds.min, bounds.max, 3);
+      open = std::any_of(clusters.begin(), clusters.end(), [&](const auto& cluster) {
+        return cluster.centroid.z() > groundZ_ + 0.5;  // as planExploration's frontiers
+      });
+    }
+    if (open) out.push_back(part);
+  }
+  return out;
 }
 
 void Slei3dStrategy::adoptInspectors(const agent::AgentView& view,
@@ -572,10 +602,7 @@ agent::AgentCommand Slei3dStrategy::charge(const agent::AgentView& view, uint32_
     flight_->hover();  // the charger is busy: where it met the station, in link
   } else if (view.energy >= kCharged || view.time - chargeRoseAt_ > kChargePatience) {
     charging_ = false;
-    if (phase_ == ExplorerPhase::ToBox)
-      flight_->goTo(boxCorner(boxes_, static_cast<size_t>(box_), options_.plan.cornerOffset,
-                              groundZ_ + options_.exploreHeight, boxFrom_),
-                    options_.speed);
+    if (phase_ == ExplorerPhase::ToBox) flight_->goTo(boxEntry(box_, boxFrom_), options_.speed);
     lastPlan_ = -1e300;
   } else {
     const double above = kChargeHeight * unit_.fleet[unit_.self].battery.chargeRange;
@@ -627,6 +654,11 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
     lastReply_ = {here, view.time};
     earlyPlace_.reset();
     earlyTried_ = false;
+    if (reply->boxShape && reply->box >= 0) {  // a part the station made of a box
+      const auto index = static_cast<size_t>(reply->box);
+      if (boxes_.size() <= index) boxes_.resize(index + 1);
+      boxes_[index] = *reply->boxShape;
+    }
     if (reply->box != box_) {
       enterBox(view, reply->box);
     } else {
@@ -706,6 +738,13 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
                            (nothingToHand || options_.variant == SleiVariant::ExploreFirst));
           report.remaining = predictRemaining(view);
           report.meetingNumber = meetingNumber_;
+          if (!report.boxFinished) {
+            if (remainderMeeting_ != meetingNumber_) {  // once per meeting: a few map scans
+              remainderMeeting_ = meetingNumber_;
+              remainder_ = remainderParts();
+            }
+            report.remainder = remainder_;
+          }
           if (unit_.fleet[unit_.self].battery.limited()) report.energy = view.energy;
           send(command, stationIndex, kReportTopic, encode(report));
         }

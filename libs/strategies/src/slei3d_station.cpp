@@ -20,6 +20,7 @@ constexpr double kStuckTime = 3.0;       // s ... for this long while driving: b
 constexpr double kBlockAhead = 0.8, kBlockRadius = 0.7;  // m: the ground it then blocks
 constexpr double kRechargeLevel = 0.2;  // battery level an explorer must be back by (the paper)
 constexpr double kChargeSettle = 5.0;   // s for an explorer to get above the charger
+constexpr double kLargerBox = 1.01;     // a box this much larger than a free one is split
 
 }  // namespace
 
@@ -70,7 +71,34 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
     reply.box = report->box;
     double lead = std::clamp(report->remaining, kMinRemaining,
                              std::max(kMinRemaining, options_.maxMeetingLead));
-    if (report->boxFinished && report->box >= 0) {
+    const Vec3 here = view.odometry.position;
+    const bool known = report->box >= 0 && static_cast<size_t>(report->box) < boxes_.size();
+    double largestFree = 0.0;
+    for (size_t b = 0; b < boxes_.size(); ++b)
+      if (!boxTaken_[b]) largestFree = std::max(largestFree, boxes_[b].size.prod());
+    if (options_.unknownWorkspace && !fixedRegions() && known && !report->boxFinished &&
+        !report->remainder.empty() &&
+        boxes_[static_cast<size_t>(report->box)].size.prod() > kLargerBox * largestFree) {
+      // The paper's octree partition of what is left, for a box larger than every free one (so
+      // the next subgroup done with its own finds one; the work stays in boxes of about one
+      // size): the box's parts with work join the free boxes (the box itself stays taken: its
+      // parts replace it), and the subgroup goes on with the one nearest the meeting, its share
+      // of eq. 9's time by volume to the next meeting. (Split at every meeting, each explorer
+      // met the station every minute for a part of ever less work: 33 collected of 150 on
+      // slei-a, scene seed 1.)
+      double left = 0.0;
+      for (const auto& part : report->remainder) {
+        boxes_.push_back(part);
+        boxTaken_.push_back(0);
+        left += part.size.prod();
+      }
+      reply.box = nearestFreeBox(boxes_, boxTaken_, here);
+      boxTaken_[static_cast<size_t>(reply.box)] = 1;
+      const double share = boxes_[static_cast<size_t>(reply.box)].size.prod() / left;
+      lead = std::clamp(report->remaining * share, kMinRemaining,
+                        std::max(kMinRemaining, options_.maxMeetingLead));
+    }
+    if (report->boxFinished && known) {
       // Rolling assignment: the free box nearest the finished one, for the whole subgroup
       // (slei-pre: the next of its fixed order).
       if (fixedRegions()) {
@@ -87,7 +115,8 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
         lead = kNewBoxLead;
       }
     }
-    const Vec3 here = view.odometry.position;
+    if (options_.unknownWorkspace && reply.box >= 0)
+      reply.boxShape = boxes_[static_cast<size_t>(reply.box)];
     if (report->boxFinished && report->box < 0 && report->remaining <= 0.0) {
       reply.next = {here, kNoMeeting};  // nothing left for this subgroup
     } else {
@@ -98,6 +127,15 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
       Vec3 place = reply.box >= 0 ? boxCorner(boxes_, static_cast<size_t>(reply.box),
                                               options_.plan.cornerOffset, here.z(), here)
                                   : here;
+      if (options_.unknownWorkspace && reply.box >= 0) {
+        // The parts tile the area and their corners may stand in a structure: the box's own
+        // nearest corner, then the ground the station can reach nearest to it (the walls it has
+        // learnt from the key frames it carries).
+        place = boxCorner(boxes_[static_cast<size_t>(reply.box)], options_.plan.cornerOffset,
+                          here.z(), here);
+        const planning::Vec2 reach = ground_->nearestReachable(here.head<2>(), place.head<2>());
+        place = Vec3(reach.x(), reach.y(), here.z());
+      }
       if (staticStation()) place = staticPlace_, lead = options_.fixInterval;
       // [energy] (the paper's eq. 15): the explorer charges first, the station waiting for it,
       // and must be back before its battery falls to 20 %: the meeting moves by the charging

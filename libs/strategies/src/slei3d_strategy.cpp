@@ -6,6 +6,7 @@
 #include <limits>
 #include <utility>
 
+#include "coinspect/core/error.h"
 #include "coinspect/strategies/runtime/box_geometry.h"
 #include "coinspect/strategies/runtime/camera_aim.h"
 #include "coinspect/strategies/runtime/option_reader.h"
@@ -34,6 +35,14 @@ void Slei3dStrategy::initialise(const agent::AgentView& view) {
   initialised_ = true;
   groundZ_ = view.odometry.position.z() - 0.1;  // every unit starts 0.1 m above the ground
   boxes_ = *view.boxes;
+  if (options_.unknownWorkspace && !boxes_.empty()) {
+    // Only the area's bounds are known: one slab per explorer of the whole fleet (every robot
+    // computes the same ones; the stations share them out like boxes). No box: no area.
+    const auto explorers = static_cast<size_t>(
+        std::count_if(unit_.fleet.begin(), unit_.fleet.end(),
+                      [](const agent::FleetMember& m) { return m.role == agent::Role::Explorer; }));
+    boxes_ = splitWorkspace(workspaceBox(*view.boxes), explorers);
+  }
   // priority_first off: urgent areas are dealt like the others.
   if (!options_.priorityFirst)
     for (auto& box : boxes_)
@@ -46,8 +55,8 @@ void Slei3dStrategy::initialise(const agent::AgentView& view) {
   relay_ = std::make_unique<coinspect_strategy::KeyFrameRelay>(relay, names_);
   if (unit_.role == agent::Role::GroundStation) {
     // The ground it drives on; it learns walls from the key frames it carries.
-    ground_ = std::make_unique<planning::GroundGrid>(
-        stationGroundGrid(boxes_, view.odometry.position.head<2>(), unit_.radius));
+    ground_ = std::make_unique<planning::GroundGrid>(stationGroundGrid(
+        boxes_, view.odometry.position.head<2>(), unit_.radius, !options_.unknownWorkspace));
     return;
   }
   runtime::RobotMapOptions mapOptions;
@@ -113,7 +122,11 @@ Vec3 Slei3dStrategy::firstWaitPoint(const Subgroup& subgroup, size_t k) const {
 
 Vec3 Slei3dStrategy::waitPointNear(int32_t box, const Vec3& from, size_t k) const {
   const auto index = static_cast<size_t>(box);
-  const Vec3 corner = boxCorner(boxes_, index, options_.plan.cornerOffset, 0.0, from);
+  // The unknown workspace: a part's corner may stand inside a structure; `from`, where the
+  // station met the explorer, is open ground.
+  const Vec3 corner = options_.unknownWorkspace
+                          ? from
+                          : boxCorner(boxes_, index, options_.plan.cornerOffset, 0.0, from);
   return awayFromBox(boxes_[index], corner, 2.5 * static_cast<double>(k + 1),
                      groundZ_ + options_.waitHeight);
 }
@@ -252,6 +265,12 @@ SleiOptions readOptions(const Config& config) {
   o.plan.evenSplit = config.getBool("slei3d", "even_split", o.plan.evenSplit);
   o.priorityFirst = config.getBool("slei3d", "priority_first", o.priorityFirst);
   o.deadlineBound = config.getBool("slei3d", "deadline_bound", o.deadlineBound);
+  const std::string workspace = config.getString("slei3d", "workspace", "boxes");
+  if (workspace != "boxes" && workspace != "unknown")
+    throw InputError(config.source(), "[slei3d] workspace",
+                     "expected boxes or unknown, got '" + workspace + "'");
+  o.unknownWorkspace = workspace == "unknown";
+  o.leafEdge = number("leaf_edge", o.leafEdge, 1.0, 1000.0);
   o.unknownBoxMargin = number("unknown_box_margin", o.unknownBoxMargin, 0.0, 10.0);
   o.plan.stationSpeed = number("station_speed", o.plan.stationSpeed, 0.1, 20.0);
   return o;

@@ -67,6 +67,55 @@ int32_t nearestFreeBox(const std::vector<agent::BoxView>& boxes,
   return -1;
 }
 
+agent::BoxView workspaceBox(const std::vector<agent::BoxView>& boxes) {
+  agent::BoxView out;
+  if (boxes.empty()) return out;
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (const auto& box : boxes) {
+    const auto bounds = runtime::boxBounds(box);
+    low = low.cwiseMin(bounds.min);
+    high = high.cwiseMax(bounds.max);
+  }
+  out.center = 0.5 * (low + high);
+  out.size = high - low;
+  return out;
+}
+
+std::vector<agent::BoxView> splitWorkspace(const agent::BoxView& workspace, size_t parts) {
+  std::vector<agent::BoxView> out;
+  const int axis = workspace.size.x() >= workspace.size.y() ? 0 : 1;
+  const double width = workspace.size[axis] / static_cast<double>(std::max<size_t>(parts, 1));
+  for (size_t i = 0; i < parts; ++i) {
+    agent::BoxView slab = workspace;
+    slab.size[axis] = width;
+    slab.center[axis] = workspace.center[axis] - 0.5 * workspace.size[axis] +
+                        (static_cast<double>(i) + 0.5) * width;
+    out.push_back(slab);
+  }
+  return out;
+}
+
+std::vector<agent::BoxView> octreeChildren(const agent::BoxView& box, double maxEdge) {
+  const auto bounds = runtime::boxBounds(box);
+  const Vec3 size = bounds.max - bounds.min;
+  Eigen::Vector3i halves = Eigen::Vector3i::Ones();
+  for (int a = 0; a < 3; ++a)
+    if (size[a] > maxEdge) halves[a] = 2;
+  if (halves.prod() == 1) return {};
+  std::vector<agent::BoxView> out;
+  const Vec3 part = size.cwiseQuotient(halves.cast<double>());
+  for (int z = 0; z < halves.z(); ++z)
+    for (int y = 0; y < halves.y(); ++y)
+      for (int x = 0; x < halves.x(); ++x) {
+        agent::BoxView child;
+        child.size = part;
+        child.center = bounds.min + (Vec3(x, y, z) + Vec3::Constant(0.5)).cwiseProduct(part);
+        child.highPriority = box.highPriority;
+        out.push_back(child);
+      }
+  return out;
+}
+
 std::vector<std::vector<int32_t>> fixedBoxOrders(const std::vector<agent::BoxView>& boxes,
                                                  const std::vector<int32_t>& firstBoxes,
                                                  const std::vector<uint8_t>& taken) {
@@ -283,7 +332,8 @@ size_t meetingToServe(const std::vector<double>& times, double now) {
 }
 
 planning::GroundGrid stationGroundGrid(const std::vector<agent::BoxView>& boxes,
-                                       const planning::Vec2& also, double radius) {
+                                       const planning::Vec2& also, double radius,
+                                       bool blockFootprints) {
   planning::Vec2 low = also, high = also;
   for (const auto& box : boxes)
     for (const double sx : {-0.5, 0.5})
@@ -295,6 +345,7 @@ planning::GroundGrid stationGroundGrid(const std::vector<agent::BoxView>& boxes,
       }
   const planning::Vec2 margin = planning::Vec2::Constant(kGroundMargin);
   planning::GroundGrid ground(low - margin, high + margin, kGroundCell);
+  if (!blockFootprints) return ground;
   for (const auto& box : boxes) {
     // Boxes turn about the vertical only; a box standing on its side keeps its x axis.
     const planning::Vec2 axis = box.rotation.col(0).head<2>();

@@ -31,6 +31,21 @@ bool get(WireReader& r, FeatureTask* t) {
          r.f64(&t->viewYaw);
 }
 
+// A world-aligned box: centre, size, priority.
+constexpr size_t kBoxBytes = 24 + 24 + 1;
+void put(WireWriter& w, const agent::BoxView& b) {
+  w.vec3(b.center);
+  w.vec3(b.size);
+  w.u8(b.highPriority ? 1 : 0);
+}
+bool get(WireReader& r, agent::BoxView* b) {
+  uint8_t urgent = 0;
+  const bool ok = r.vec3(&b->center) && r.vec3(&b->size) && r.u8(&urgent) && urgent <= 1 &&
+                  (b->size.array() > 0.0).all();
+  b->highPriority = urgent == 1;
+  return ok;
+}
+
 void putIds(WireWriter& w, const std::vector<uint32_t>& ids) {
   w.u32(static_cast<uint32_t>(ids.size()));
   for (const uint32_t id : ids)
@@ -87,6 +102,9 @@ std::vector<uint8_t> encode(const Report& report) {
   w.f64(report.remaining);
   w.u32(report.meetingNumber);
   w.f64(report.energy);
+  w.u32(static_cast<uint32_t>(report.remainder.size()));
+  for (const auto& part : report.remainder)
+    put(w, part);
   return w.take();
 }
 
@@ -94,10 +112,14 @@ std::optional<Report> decodeReport(const std::vector<uint8_t>& bytes) {
   WireReader r(bytes);
   Report report;
   uint8_t finishedFlag = 0;
-  const bool ok = r.i32(&report.box) && r.u8(&finishedFlag) && finishedFlag <= 1 &&
-                  r.f64(&report.remaining) && r.u32(&report.meetingNumber) &&
-                  r.f64(&report.energy) && report.energy >= 0.0 && report.energy <= 1.0;
+  uint32_t n = 0;
+  bool ok = r.i32(&report.box) && r.u8(&finishedFlag) && finishedFlag <= 1 &&
+            r.f64(&report.remaining) && r.u32(&report.meetingNumber) && r.f64(&report.energy) &&
+            report.energy >= 0.0 && report.energy <= 1.0 && r.count(&n, kBoxBytes);
   report.boxFinished = finishedFlag == 1;
+  report.remainder.resize(ok ? n : 0);
+  for (uint32_t i = 0; ok && i < n; ++i)
+    ok = get(r, &report.remainder[i]);
   return finished(r, ok, report);
 }
 
@@ -116,6 +138,8 @@ std::vector<uint8_t> encode(const Reply& reply) {
   }
   w.u8(reply.dropInspectors ? 1 : 0);
   w.f64(reply.chargeFrom);
+  w.u8(reply.boxShape ? 1 : 0);
+  if (reply.boxShape) put(w, *reply.boxShape);
   return w.take();
 }
 
@@ -133,8 +157,14 @@ std::optional<Reply> decodeReply(const std::vector<uint8_t>& bytes) {
   for (uint32_t i = 0; ok && i < n; ++i)
     ok = r.u32(&reply.adopt[i].inspector) && r.vec3(&reply.adopt[i].place);
   uint8_t drop = 0;
-  ok = ok && r.u8(&drop) && drop <= 1 && r.f64(&reply.chargeFrom);
+  uint8_t shaped = 0;
+  ok = ok && r.u8(&drop) && drop <= 1 && r.f64(&reply.chargeFrom) && r.u8(&shaped) && shaped <= 1;
   reply.dropInspectors = drop == 1;
+  if (ok && shaped) {
+    agent::BoxView shape;
+    ok = get(r, &shape);
+    reply.boxShape = shape;
+  }
   return finished(r, ok, std::move(reply));
 }
 

@@ -234,6 +234,51 @@ TEST(SleiFleetPlan, TheStationServesAnOverdueMeetingBeforeWaitingForALaterOne) {
   EXPECT_EQ(meetingToServe({700.0, 95.0, 80.0}, 100.0), 2u);
 }
 
+TEST(SleiFleetPlan, TheUnknownWorkspaceIsTheBoxesBoundsInEqualSlabs) {
+  // A 10 x 4 x 6 box at the origin and one turned by 90 deg: 2 x 8 x 4 at (20, 0, 1).
+  std::vector<agent::BoxView> boxes = {makeBox(Vec3(0, 0, 3), Vec3(10, 4, 6)),
+                                       makeBox(Vec3(20, 0, 1), Vec3(8, 2, 4), M_PI / 2)};
+  const auto workspace = workspaceBox(boxes);
+  EXPECT_TRUE(workspace.center.isApprox(Vec3(8, 0, 2.5), 1e-9)) << workspace.center.transpose();
+  EXPECT_TRUE(workspace.size.isApprox(Vec3(26, 8, 7), 1e-9)) << workspace.size.transpose();
+  // Across the longer side (x): three slabs of 26 / 3 m, in order along it.
+  const auto slabs = splitWorkspace(workspace, 3);
+  ASSERT_EQ(slabs.size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_NEAR(slabs[i].size.x(), 26.0 / 3.0, 1e-9);
+    EXPECT_NEAR(slabs[i].size.y(), 8.0, 1e-9);
+    EXPECT_NEAR(slabs[i].center.x(), -5.0 + (i + 0.5) * 26.0 / 3.0, 1e-9);
+    EXPECT_NEAR(slabs[i].center.z(), 2.5, 1e-9);
+  }
+  // Longer along y: slabs across y.
+  const auto tall = splitWorkspace(makeBox(Vec3(0, 0, 0), Vec3(4, 12, 2)), 2);
+  ASSERT_EQ(tall.size(), 2u);
+  EXPECT_NEAR(tall[0].center.y(), -3.0, 1e-9);
+  EXPECT_NEAR(tall[1].size.y(), 6.0, 1e-9);
+  EXPECT_TRUE(splitWorkspace(workspace, 0).empty());
+}
+
+TEST(SleiFleetPlan, TheOctreeStepHalvesEveryEdgeLongerThanTheLeafSize) {
+  agent::BoxView box = makeBox(Vec3(0, 0, 5), Vec3(24, 16, 8));
+  box.highPriority = true;
+  // x and y above 10 m, z not: four parts of 12 x 8 x 8, x fastest.
+  const auto parts = octreeChildren(box, 10.0);
+  ASSERT_EQ(parts.size(), 4u);
+  EXPECT_TRUE(parts[0].center.isApprox(Vec3(-6, -4, 5), 1e-9));
+  EXPECT_TRUE(parts[1].center.isApprox(Vec3(6, -4, 5), 1e-9));
+  EXPECT_TRUE(parts[3].center.isApprox(Vec3(6, 4, 5), 1e-9));
+  double volume = 0.0;
+  for (const auto& part : parts) {
+    EXPECT_TRUE(part.size.isApprox(Vec3(12, 8, 8), 1e-9));
+    EXPECT_TRUE(part.highPriority);
+    volume += part.size.prod();
+  }
+  EXPECT_NEAR(volume, box.size.prod(), 1e-6);
+  // Every edge above the leaf size: eight; none: nothing (a leaf).
+  EXPECT_EQ(octreeChildren(makeBox(Vec3(0, 0, 0), Vec3(20, 20, 20)), 10.0).size(), 8u);
+  EXPECT_TRUE(octreeChildren(parts[0], 12.0).empty());
+}
+
 TEST(SleiFleetPlan, ALostSubgroupsBoxGoesToTheShortestOtherOrder) {
   std::vector<std::vector<int32_t>> orders{{1, 2}, {3}, {4}};
   giveBoxToShortestOrder(orders, 1, 7);  // 1 is lost: 2 is the shortest of the others

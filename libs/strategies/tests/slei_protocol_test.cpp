@@ -7,6 +7,22 @@
 namespace coinspect::strategies::slei {
 namespace {
 
+// Aggregates with the fields a test sets; the rest default.
+Report makeReport(int32_t box, bool finished, double remaining, uint32_t number,
+                  double energy = 1.0) {
+  Report r;
+  r.box = box, r.boxFinished = finished, r.remaining = remaining, r.meetingNumber = number;
+  r.energy = energy;
+  return r;
+}
+Reply makeReply(uint32_t number, int32_t box, Meeting next, std::vector<Meeting> stops = {},
+                std::vector<Adoption> adopt = {}, bool drop = false, double chargeFrom = 0.0) {
+  Reply r;
+  r.meetingNumber = number, r.box = box, r.next = next, r.stops = std::move(stops);
+  r.adopt = std::move(adopt), r.dropInspectors = drop, r.chargeFrom = chargeFrom;
+  return r;
+}
+
 TEST(SleiProtocol, EveryMessageRoundTrips) {
   FleetPlan plan;
   plan.subgroups.push_back({1, {2, 4}, 3, {Vec3(1, 2, 0), 81.5}, 7});
@@ -20,7 +36,7 @@ TEST(SleiProtocol, EveryMessageRoundTrips) {
   EXPECT_EQ(decodedPlan->subgroups[0].station, 7u);
   EXPECT_EQ(decodedPlan->subgroups[1].box, -1);
 
-  const auto report = decodeReport(encode(Report{2, true, 75.25, 4, 0.375}));
+  const auto report = decodeReport(encode(makeReport(2, true, 75.25, 4, 0.375)));
   ASSERT_TRUE(report);
   EXPECT_EQ(report->box, 2);
   EXPECT_TRUE(report->boxFinished);
@@ -28,13 +44,9 @@ TEST(SleiProtocol, EveryMessageRoundTrips) {
   EXPECT_EQ(report->meetingNumber, 4u);
   EXPECT_EQ(report->energy, 0.375);
 
-  const auto reply = decodeReply(encode(Reply{4,
-                                              5,
-                                              {Vec3(3, 4, 5), 200.0},
-                                              {{Vec3(1, 1, 0), 150.0}, {Vec3(3, 4, 5), 200.0}},
-                                              {{6, Vec3(7, 8, 9)}},
-                                              true,
-                                              180.5}));
+  const auto reply = decodeReply(encode(makeReply(4, 5, {Vec3(3, 4, 5), 200.0},
+                                                  {{Vec3(1, 1, 0), 150.0}, {Vec3(3, 4, 5), 200.0}},
+                                                  {{6, Vec3(7, 8, 9)}}, true, 180.5)));
   ASSERT_TRUE(reply);
   EXPECT_TRUE(reply->dropInspectors);
   EXPECT_EQ(reply->chargeFrom, 180.5);
@@ -47,16 +59,44 @@ TEST(SleiProtocol, EveryMessageRoundTrips) {
   EXPECT_EQ(reply->stops[0].place, Vec3(1, 1, 0));
   EXPECT_EQ(reply->stops[1].time, 200.0);
   auto replyBytes =
-      encode(Reply{4, 5, {Vec3(3, 4, 5), 200.0}, {{Vec3(1, 1, 0), 150.0}}, {}, false});
-  // No charger time, no flag, no adoptions, a stop cut short.
-  replyBytes.resize(replyBytes.size() - 8 - 1 - 4 - 8);
+      encode(makeReply(4, 5, {Vec3(3, 4, 5), 200.0}, {{Vec3(1, 1, 0), 150.0}}, {}, false));
+  // No shape flag, no charger time, no flag, no adoptions, a stop cut short.
+  replyBytes.resize(replyBytes.size() - 1 - 8 - 1 - 4 - 8);
   EXPECT_FALSE(decodeReply(replyBytes));
-  replyBytes = encode(Reply{4, 5, {Vec3(3, 4, 5), 200.0}, {}, {{6, Vec3(7, 8, 9)}}, false});
-  replyBytes.resize(replyBytes.size() - 8 - 1 - 8);  // an adoption cut short
+  replyBytes = encode(makeReply(4, 5, {Vec3(3, 4, 5), 200.0}, {}, {{6, Vec3(7, 8, 9)}}, false));
+  replyBytes.resize(replyBytes.size() - 1 - 8 - 1 - 8);  // an adoption cut short
   EXPECT_FALSE(decodeReply(replyBytes));
-  replyBytes = encode(Reply{4, 5, {Vec3(3, 4, 5), 200.0}, {}, {}, false});
-  replyBytes[replyBytes.size() - 9] = 2;  // not a flag
+  replyBytes = encode(makeReply(4, 5, {Vec3(3, 4, 5), 200.0}, {}, {}, false));
+  replyBytes[replyBytes.size() - 10] = 2;  // not a flag
   EXPECT_FALSE(decodeReply(replyBytes));
+  replyBytes = encode(makeReply(4, 5, {Vec3(3, 4, 5), 200.0}, {}, {}, false));
+  replyBytes.back() = 2;  // not a shape flag
+  EXPECT_FALSE(decodeReply(replyBytes));
+
+  // The unknown workspace's parts: a report's remainder and a reply's box shape.
+  Report parts = makeReport(1, false, 60.0, 3);
+  parts.remainder.resize(2);
+  parts.remainder[0].center = Vec3(1, 2, 3);
+  parts.remainder[0].size = Vec3(4, 5, 6);
+  parts.remainder[1].center = Vec3(-1, 0, 2);
+  parts.remainder[1].size = Vec3(8, 8, 4);
+  parts.remainder[1].highPriority = true;
+  const auto decodedParts = decodeReport(encode(parts));
+  ASSERT_TRUE(decodedParts);
+  ASSERT_EQ(decodedParts->remainder.size(), 2u);
+  EXPECT_EQ(decodedParts->remainder[0].center, Vec3(1, 2, 3));
+  EXPECT_EQ(decodedParts->remainder[0].size, Vec3(4, 5, 6));
+  EXPECT_FALSE(decodedParts->remainder[0].highPriority);
+  EXPECT_TRUE(decodedParts->remainder[1].highPriority);
+  parts.remainder[1].size.z() = 0.0;  // not a box
+  EXPECT_FALSE(decodeReport(encode(parts)));
+  Reply shaped = makeReply(4, 9, {Vec3(3, 4, 5), 200.0});
+  shaped.boxShape = parts.remainder[0];
+  const auto decodedShape = decodeReply(encode(shaped));
+  ASSERT_TRUE(decodedShape && decodedShape->boxShape);
+  EXPECT_EQ(decodedShape->boxShape->center, Vec3(1, 2, 3));
+  EXPECT_EQ(decodedShape->boxShape->size, Vec3(4, 5, 6));
+  EXPECT_FALSE(decodeReply(encode(makeReply(4, 9, {Vec3(3, 4, 5), 200.0})))->boxShape);
 
   Orders orders;
   orders.sequence = 7;
@@ -78,17 +118,17 @@ TEST(SleiProtocol, EveryMessageRoundTrips) {
 }
 
 TEST(SleiProtocol, MalformedMessagesAreRejected) {
-  auto bytes = encode(Report{2, true, 1.0, 1});
+  auto bytes = encode(makeReport(2, true, 1.0, 1));
   bytes.pop_back();  // truncated
   EXPECT_FALSE(decodeReport(bytes));
-  bytes = encode(Report{2, true, 1.0, 1});
+  bytes = encode(makeReport(2, true, 1.0, 1));
   bytes.push_back(0);  // trailing garbage
   EXPECT_FALSE(decodeReport(bytes));
-  bytes = encode(Report{2, true, 1.0, 1});
+  bytes = encode(makeReport(2, true, 1.0, 1));
   bytes[4] = 7;  // a flag that is neither 0 nor 1
   EXPECT_FALSE(decodeReport(bytes));
-  EXPECT_FALSE(decodeReport(encode(Report{2, true, 1.0, 1, 1.5})));  // not a battery level
-  EXPECT_FALSE(decodeReport(encode(Report{2, true, 1.0, 1, std::nan("")})));
+  EXPECT_FALSE(decodeReport(encode(makeReport(2, true, 1.0, 1, 1.5))));  // not a battery level
+  EXPECT_FALSE(decodeReport(encode(makeReport(2, true, 1.0, 1, std::nan("")))));
   // A list length larger than the message could hold.
   std::vector<uint8_t> huge{0xff, 0xff, 0xff, 0x7f};
   EXPECT_FALSE(decodePlan(huge));

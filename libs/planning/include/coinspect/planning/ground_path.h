@@ -31,6 +31,10 @@ class GroundGrid {
   // path exists. A blocked start or goal is moved to the nearest free cell within 3 m first
   // (the path then ends there); straight stretches between waypoints cross free cells only.
   std::vector<Vec2> path(const Vec2& start, const Vec2& goal) const;
+  // The centre of the free cell nearest `goal` among those a path from `start` reaches
+  // (8-connected; a blocked start moved as in path()); `goal` itself when no cell is reached.
+  // Where a vehicle can be closest to a place that may lie inside an obstacle.
+  Vec2 nearestReachable(const Vec2& start, const Vec2& goal) const;
 
  private:
   bool inside(int x, int y) const { return x >= 0 && y >= 0 && x < nx_ && y < ny_; }

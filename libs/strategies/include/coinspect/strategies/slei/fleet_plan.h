@@ -25,6 +25,18 @@ std::vector<size_t> inspectorsPerSubgroup(size_t inspectors, size_t explorers, b
 int32_t nearestFreeBox(const std::vector<agent::BoxView>& boxes,
                        const std::vector<uint8_t>& assigned, const Vec3& from);
 
+// The fully unknown workspace (the paper's extension; `[slei3d] workspace = unknown`): the
+// robots know the bounds of the whole area, not where its structures stand.
+// The world-aligned bounds of every box (rotated boxes included), as one box.
+agent::BoxView workspaceBox(const std::vector<agent::BoxView>& boxes);
+// The paper's first split: `parts` equal slabs across the longer horizontal side, in order along
+// it (none for 0 parts).
+std::vector<agent::BoxView> splitWorkspace(const agent::BoxView& workspace, size_t parts);
+// One step of the paper's octree partition: the box halved along every edge longer than
+// `maxEdge` (2, 4 or 8 parts, x fastest, then y, then z); none when no edge is longer. The parts
+// keep the box's priority.
+std::vector<agent::BoxView> octreeChildren(const agent::BoxView& box, double maxEdge);
+
 // SLEI-PRE's fixed box orders (the paper's baseline without rolling assignment): given each
 // subgroup's first box (-1: none), the other boxes are dealt in turns, each subgroup taking the
 // free box nearest its last one (nearestFreeBox), until none is left. Returns, per subgroup,
@@ -67,8 +79,11 @@ inline constexpr double kGroundClearance = 0.5;  // m a station keeps beyond its
 // The ground a station of collision radius `radius` knows from the start: a grid over the boxes
 // and `also` with 15 m around, the boxes' footprints blocked (inflated by the radius and
 // kGroundClearance).
+// `blockFootprints` false (the unknown workspace: its boxes are parts of the area, not
+// structures): only the grid's extent comes from the boxes.
 planning::GroundGrid stationGroundGrid(const std::vector<agent::BoxView>& boxes,
-                                       const planning::Vec2& also, double radius);
+                                       const planning::Vec2& also, double radius,
+                                       bool blockFootprints = true);
 
 // What the station learns of its ground from the LiDAR points it carries (key frames relayed
 // by the explorers, world frame): a point between 0.3 and 2 m above `groundZ` is an obstacle

@@ -59,6 +59,10 @@ struct Report {
   double remaining = 0.0;      // s, predicted time to finish the box (eq. 9)
   uint32_t meetingNumber = 0;  // which meeting this is (the station answers each one once)
   double energy = 1.0;         // battery level (fraction; 1 when not limited): it charges first
+  // The unknown workspace: the box's octree parts that still hold work (fleet_plan.h,
+  // octreeChildren), when it is not finished and larger than a leaf. World-aligned (the
+  // rotation is not sent).
+  std::vector<agent::BoxView> remainder;
 };
 
 // An inspector whose explorer is presumed lost, and where it should be waiting.
@@ -84,6 +88,8 @@ struct Reply {
   bool dropInspectors = false;
   // [energy]: when the station's charger is free for it (another explorer may be charging).
   double chargeFrom = 0.0;
+  // The unknown workspace: the shape of `box`, a part the station made (world-aligned).
+  std::optional<agent::BoxView> boxShape;
 };
 
 // An explorer's orders to one of its inspectors: features appended to its list in order, and

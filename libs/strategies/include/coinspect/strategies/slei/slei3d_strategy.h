@@ -56,6 +56,12 @@ struct SleiOptions {
   // FF3E's bound, greedy form: explore only what still lets it reach its station meeting on
   // time, and leave at once when nothing fits (off: nearest first, leave by the clock).
   bool deadlineBound = false;
+  // The paper's fully unknown workspace (`[slei3d] workspace = unknown`): the robots use only the
+  // bounds of all the boxes, split into one equal slab per explorer; at each meeting an explorer
+  // whose box is not done and larger than a leaf reports the box's octree parts that still hold
+  // work, which join the free boxes (fleet_plan.h, splitWorkspace, octreeChildren).
+  bool unknownWorkspace = false;
+  double leafEdge = 10.0;  // m: the octree partition stops at parts no longer than this
   // m around the boxes where unknown space blocks paths (runtime::RobotMapOptions::boxMargin).
   // The generated SLEI scenes' boxes enclose their structures with 1 m to spare; 2 m closed
   // slei-c's 6 m streets to every UAV that had not mapped them.
@@ -138,6 +144,11 @@ class Slei3dStrategy : public agent::Strategy {
   void planHandout(const agent::AgentView& view);
   double predictRemaining(const agent::AgentView& view) const;
   void enterBox(const agent::AgentView& view, int32_t box);
+  // Where it enters a box coming from `from`: the box's corner nearest it, at exploreHeight.
+  Vec3 boxEntry(int32_t box, const Vec3& from) const;
+  // The unknown workspace: the octree parts of its box that still hold work (open surface or a
+  // frontier), for its report; none for a leaf.
+  std::vector<agent::BoxView> remainderParts() const;
   // Inspectors of a lost explorer, given by the station: met where they should wait and told of
   // this subgroup's wait point.
   void adoptInspectors(const agent::AgentView& view, const std::vector<Adoption>& adopt);
@@ -220,6 +231,8 @@ class Slei3dStrategy : public agent::Strategy {
   Vec3 stationSeen_ = Vec3::Zero();  // where its station last was in sight
   agent::AgentCommand charge(const agent::AgentView& view, uint32_t station);
   uint32_t meetingNumber_ = 1;
+  std::vector<agent::BoxView> remainder_;  // the unknown workspace: its box's parts with work
+  uint32_t remainderMeeting_ = 0;          // the meeting they were computed for
   bool explorationFinished_ = false;
   std::optional<Vec3> exploreAim_;
   std::vector<Vec3> unreachable_;     // frontier clusters flown to or given up
