@@ -136,6 +136,88 @@ std::vector<size_t> deadlineBoundedTour(const Vec3& start, double now,
   }
 }
 
+namespace {
+
+// The depth-first search of deadlineBoundedSearch: extends `sequence` (ending at `from` at
+// `time`, having gained `gained`) and keeps the best rate seen in `best`.
+struct SequenceSearch {
+  const std::vector<Vec3>& stops;
+  const std::vector<double>& gains;
+  const Vec3& meeting;
+  double now, deadline, speed;
+  const FrontierSearchOptions& options;
+  std::vector<uint8_t> used;
+  std::vector<size_t> sequence, best;
+  double bestRate = -1.0, bestTime = 0.0;
+
+  double flight(const Vec3& a, const Vec3& b) const {
+    return options.travelFactor * (a - b).norm() / speed;
+  }
+  void extend(const Vec3& from, double time, double gained) {
+    if (!sequence.empty()) {
+      const double elapsed = std::max(time - now, 1e-9);
+      const double rate = gained / elapsed;
+      if (rate > bestRate + 1e-12 || (std::abs(rate - bestRate) <= 1e-12 && elapsed < bestTime))
+        bestRate = rate, bestTime = elapsed, best = sequence;
+    }
+    if (sequence.size() >= options.depth) return;
+    // The `branching` nearest stops that still fit before the deadline.
+    std::vector<std::pair<double, size_t>> next;
+    for (size_t i = 0; i < stops.size(); ++i) {
+      if (used[i]) continue;
+      const double arrive = time + flight(from, stops[i]) + options.dwell;
+      if (arrive + flight(stops[i], meeting) > deadline) continue;
+      next.emplace_back(arrive, i);
+    }
+    const size_t keep = std::min(options.branching, next.size());
+    std::partial_sort(next.begin(), next.begin() + static_cast<std::ptrdiff_t>(keep), next.end());
+    next.resize(keep);
+    for (const auto& [arrive, i] : next) {
+      used[i] = 1;
+      sequence.push_back(i);
+      extend(stops[i], arrive, gained + gains[i]);
+      sequence.pop_back();
+      used[i] = 0;
+    }
+  }
+};
+
+}  // namespace
+
+std::vector<size_t> deadlineBoundedSearch(const Vec3& start, double now,
+                                          const std::vector<Vec3>& stops,
+                                          const std::vector<double>& gains, const Vec3& meeting,
+                                          double deadline, double speed,
+                                          const FrontierSearchOptions& options) {
+  const char* const source = "frontier search";
+  if (gains.size() != stops.size()) throw InputError(source, "gains", "one per stop");
+  for (const double gain : gains)
+    if (!std::isfinite(gain) || gain < 0.0) throw InputError(source, "gains", "finite, >= 0");
+  if (options.depth == 0)
+    return deadlineBoundedTour(start, now, stops, meeting, deadline, speed, options.travelFactor);
+  SequenceSearch search{stops, gains, meeting, now, deadline, speed, options, {}, {}, {}};
+  search.used.assign(stops.size(), 0);
+  search.extend(start, now, 0.0);
+  if (search.best.empty()) return {};
+  // Then nearest first from the sequence's end, among the stops it left.
+  std::vector<Vec3> rest;
+  std::vector<size_t> restIndex;
+  Vec3 end = start;
+  double time = now;
+  for (const size_t i : search.best) {
+    time += search.flight(end, stops[i]) + options.dwell;
+    end = stops[i];
+    search.used[i] = 1;
+  }
+  for (size_t i = 0; i < stops.size(); ++i)
+    if (!search.used[i]) rest.push_back(stops[i]), restIndex.push_back(i);
+  std::vector<size_t> out = search.best;
+  for (const size_t k :
+       deadlineBoundedTour(end, time, rest, meeting, deadline, speed, options.travelFactor))
+    out.push_back(restIndex[k]);
+  return out;
+}
+
 std::array<Vec3, 4> meetingCorners(const Vec3& boxMin, const Vec3& boxMax,
                                    const MeetingCornerOptions& options) {
   const char* const source = "meeting corners";

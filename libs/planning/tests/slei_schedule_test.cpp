@@ -525,5 +525,48 @@ TEST(DeadlineBoundedTour, KeepsOnlyStopsFromWhichTheMeetingIsReachedInTime) {
             (std::vector<size_t>{1}));
 }
 
+TEST(SleiFrontierSearch, TheBestGainPerSecondWithinTheDeadlineThenNearestFirst) {
+  const Vec3 origin = Vec3::Zero();
+  const double unbounded = std::numeric_limits<double>::infinity();
+  // Little on the way to much: one step ahead (depth 1) takes the big one first and comes back;
+  // two steps ahead take the small one on the way (21 in 2 s beats 20 in 2 s).
+  const std::vector<Vec3> line{Vec3(1, 0, 0), Vec3(2, 0, 0)};
+  const std::vector<double> gains{1.0, 20.0};
+  FrontierSearchOptions options;
+  options.depth = 1;
+  EXPECT_EQ(deadlineBoundedSearch(origin, 0.0, line, gains, origin, unbounded, 1.0, options),
+            (std::vector<size_t>{1, 0}));
+  options.depth = 2;
+  EXPECT_EQ(deadlineBoundedSearch(origin, 0.0, line, gains, origin, unbounded, 1.0, options),
+            (std::vector<size_t>{0, 1}));
+  // Ten seconds at each stop: the big one alone (20 in 12 s) beats both (21 in 22 s).
+  options.dwell = 10.0;
+  EXPECT_EQ(deadlineBoundedSearch(origin, 0.0, line, gains, origin, unbounded, 1.0, options),
+            (std::vector<size_t>{1, 0}));
+  // Back at the start by 3 s: the far one does not fit (2 s there, 2 back), the near one does.
+  options.dwell = 0.0;
+  EXPECT_EQ(deadlineBoundedSearch(origin, 100.0, line, gains, origin, 103.0, 1.0, options),
+            (std::vector<size_t>{0}));
+  EXPECT_TRUE(
+      deadlineBoundedSearch(origin, 100.0, line, gains, origin, 101.0, 1.0, options).empty());
+  // After the best sequence, the rest nearest first: the big one on the other side, then the
+  // small ones from there.
+  const std::vector<Vec3> sides{Vec3(1, 0, 0), Vec3(-2, 0, 0), Vec3(3, 0, 0)};
+  options.depth = 1;
+  EXPECT_EQ(
+      deadlineBoundedSearch(origin, 0.0, sides, {1.0, 10.0, 1.0}, origin, unbounded, 1.0, options),
+      (std::vector<size_t>{1, 0, 2}));
+  // Depth 0 is the greedy tour.
+  options.depth = 0;
+  EXPECT_EQ(
+      deadlineBoundedSearch(origin, 0.0, sides, {1.0, 10.0, 1.0}, origin, unbounded, 1.0, options),
+      deadlineBoundedTour(origin, 0.0, sides, origin, unbounded, 1.0));
+  EXPECT_THROW(deadlineBoundedSearch(origin, 0.0, sides, {1.0}, origin, 10.0, 1.0, options),
+               InputError);
+  EXPECT_THROW(
+      deadlineBoundedSearch(origin, 0.0, sides, {1.0, -1.0, 1.0}, origin, 10.0, 1.0, options),
+      InputError);
+}
+
 }  // namespace
 }  // namespace coinspect::planning

@@ -233,13 +233,22 @@ Slei3dStrategy::Plan Slei3dStrategy::planExploration(const agent::AgentView& vie
     // Only patches with a viewpoint count as left to sweep (eq. 9's explored share): a box
     // with surface no safe place sees would never look explored.
     openPatches_ = open.size() - uncoverable.size();
-    // Flown nearest first from where the explorer is (a greedy tour), only as far as it still
-    // reaches its station meeting in time (FF3E's bound); the rest waits for the next plan.
+    // Flown nearest first from where the explorer is (a greedy tour), or with `search_depth`
+    // the best sequence of that many stops by patches swept per second first (FF3E's search),
+    // only as far as it still reaches its station meeting in time (FF3E's bound); the rest
+    // waits for the next plan.
     std::vector<Vec3> positions;
-    for (const auto& v : views)
+    std::vector<double> gains;
+    for (const auto& v : views) {
       positions.push_back(v.position);
-    for (const size_t k : planning::deadlineBoundedTour(here, view.time, positions, meeting,
-                                                        deadline, options_.speed, kTravelFactor)) {
+      gains.push_back(static_cast<double>(v.covered.size()));
+    }
+    planning::FrontierSearchOptions search;
+    search.depth = options_.searchDepth;
+    search.dwell = kTurnTime;
+    search.travelFactor = kTravelFactor;
+    for (const size_t k : planning::deadlineBoundedSearch(
+             here, view.time, positions, gains, meeting, deadline, options_.speed, search)) {
       SweepStop stop{views[k].position, views[k].target, {}};
       for (const uint32_t i : views[k].covered)
         stop.keys.push_back(open[i].key);

@@ -265,6 +265,8 @@ SleiOptions readOptions(const Config& config) {
   o.plan.evenSplit = config.getBool("slei3d", "even_split", o.plan.evenSplit);
   o.priorityFirst = config.getBool("slei3d", "priority_first", o.priorityFirst);
   o.deadlineBound = config.getBool("slei3d", "deadline_bound", o.deadlineBound);
+  o.searchDepth =
+      static_cast<size_t>(runtime::readInteger(config, "slei3d", "search_depth", 0, 0, 6));
   const std::string workspace = config.getString("slei3d", "workspace", "boxes");
   if (workspace != "boxes" && workspace != "unknown")
     throw InputError(config.source(), "[slei3d] workspace",

@@ -1,6 +1,11 @@
 // The slei3d ground station driven by hand: the unknown workspace's slabs and octree parts.
 #include <gtest/gtest.h>
 
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "coinspect/strategies/slei/fleet_plan.h"
 #include "coinspect/strategies/slei/slei3d_strategy.h"
 #include "coinspect/testing/input_errors.h"
@@ -159,15 +164,20 @@ TEST(Slei3dStation, WithTheBoxesKnownAReportedRemainderChangesNothing) {
   EXPECT_FALSE(reply->boxShape);
 }
 
-TEST(Slei3dStation, AnUnknownWorkspaceValueIsAnError) {
-  const auto config = Config::fromText("[slei3d]\nworkspace = guess\n", "bad.ini");
+TEST(Slei3dStation, BadWorkspaceAndSearchKeysAreErrors) {
   agent::StrategyRegistry registry;
   registerSlei3d(registry);
-  const auto message =
-      testing::messageOf([&] { registry.create("slei3d", stationContext(config)); });
-  EXPECT_MENTIONS(message, "bad.ini");
-  EXPECT_MENTIONS(message, "workspace");
-  EXPECT_MENTIONS(message, "guess");
+  for (const auto& [text, key] :
+       std::vector<std::pair<std::string, std::string>>{{"workspace = guess", "workspace"},
+                                                        {"leaf_edge = 0", "leaf_edge"},
+                                                        {"search_depth = 7", "search_depth"},
+                                                        {"search_depth = -1", "search_depth"}}) {
+    const auto config = Config::fromText("[slei3d]\n" + text + "\n", "bad.ini");
+    const auto message =
+        testing::messageOf([&] { registry.create("slei3d", stationContext(config)); });
+    EXPECT_MENTIONS(message, "bad.ini");
+    EXPECT_MENTIONS(message, key);
+  }
 }
 
 }  // namespace

@@ -100,6 +100,25 @@ std::vector<size_t> deadlineBoundedTour(const Vec3& start, double now,
                                         const std::vector<Vec3>& stops, const Vec3& meeting,
                                         double deadline, double speed, double travelFactor = 1.0);
 
+// FF3E's recursive search, our form: of the sequences of up to `depth` stops (at each step one of
+// the `branching` nearest not yet taken that still lets the explorer reach `meeting` by
+// `deadline`), the one that gains the most per second (the sum of `gains`, e.g. the surface each
+// stop's view sweeps, over the flying time plus `dwell` s a stop; ties to the shorter), then
+// deadlineBoundedTour's nearest-first stops from its end: the caller flies it and searches
+// again later (receding horizon). Times as deadlineBoundedTour's. Depth 0: deadlineBoundedTour.
+// Throws InputError when `gains` does not match `stops` or a gain is negative or not finite.
+struct FrontierSearchOptions {
+  size_t depth = 3;
+  size_t branching = 6;
+  double dwell = 0.0;  // s at each stop
+  double travelFactor = 1.0;
+};
+std::vector<size_t> deadlineBoundedSearch(const Vec3& start, double now,
+                                          const std::vector<Vec3>& stops,
+                                          const std::vector<double>& gains, const Vec3& meeting,
+                                          double deadline, double speed,
+                                          const FrontierSearchOptions& options);
+
 // ---------------------------------------------------------------------------------------------
 // Meeting place: a corner of the box footprint
 

@@ -56,6 +56,9 @@ struct SleiOptions {
   // FF3E's bound, greedy form: explore only what still lets it reach its station meeting on
   // time, and leave at once when nothing fits (off: nearest first, leave by the clock).
   bool deadlineBound = false;
+  // FF3E's recursive search over the detector's stops (planning::deadlineBoundedSearch): how
+  // many stops ahead (0: nearest first).
+  size_t searchDepth = 0;
   // The paper's fully unknown workspace (`[slei3d] workspace = unknown`): the robots use only the
   // bounds of all the boxes, split into one equal slab per explorer; at each meeting an explorer
   // whose box is not done and larger than a leaf reports the box's octree parts that still hold
