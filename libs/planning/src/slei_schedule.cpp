@@ -107,11 +107,20 @@ double straightTourLength(const Vec3& start, const std::vector<Vec3>& stops, boo
   return length;
 }
 
+namespace {
+
+// FF3E's time model: straight lines at `speed`, times `travelFactor` (paths are longer).
+double straightFlight(const Vec3& a, const Vec3& b, double speed, double travelFactor) {
+  return travelFactor * (a - b).norm() / speed;
+}
+
+}  // namespace
+
 std::vector<size_t> deadlineBoundedTour(const Vec3& start, double now,
                                         const std::vector<Vec3>& stops, const Vec3& meeting,
                                         double deadline, double speed, double travelFactor) {
   const auto flight = [&](const Vec3& a, const Vec3& b) {
-    return travelFactor * (a - b).norm() / speed;
+    return straightFlight(a, b, speed, travelFactor);
   };
   std::vector<uint8_t> used(stops.size(), 0);
   std::vector<size_t> tour;
@@ -151,7 +160,7 @@ struct SequenceSearch {
   double bestRate = -1.0, bestTime = 0.0;
 
   double flight(const Vec3& a, const Vec3& b) const {
-    return options.travelFactor * (a - b).norm() / speed;
+    return straightFlight(a, b, speed, options.travelFactor);
   }
   void extend(const Vec3& from, double time, double gained) {
     if (!sequence.empty()) {

@@ -106,14 +106,20 @@ Vec3 Slei3dStrategy::boxEntry(int32_t box, const Vec3& from) const {
                    groundZ_ + options_.exploreHeight, from);
 }
 
+std::vector<planning::InspectionPatch> Slei3dStrategy::unsweptPatches(
+    const agent::BoxView& box) const {
+  std::vector<planning::InspectionPatch> open;
+  for (const auto& patch :
+       planning::groupSurface(map_->surfaceNearBoxes({box}, kSurfaceNearBox), kPatchSize))
+    if (!swept_.count(patch.key)) open.push_back(patch);
+  return open;
+}
+
 std::vector<agent::BoxView> Slei3dStrategy::remainderParts() const {
   if (!options_.unknownWorkspace || fixedRegions() || box_ < 0) return {};
   std::vector<agent::BoxView> out;
   for (const auto& part : octreeChildren(boxes_[static_cast<size_t>(box_)], options_.leafEdge)) {
-    const auto patches =
-        planning::groupSurface(map_->surfaceNearBoxes({part}, kSurfaceNearBox), kPatchSize);
-    bool open = std::any_of(patches.begin(), patches.end(),
-                            [&](const auto& patch) { return !swept_.count(patch.key); });
+    bool open = !unsweptPatches(part).empty();
     if (!open) {
       const auto bounds = runtime::boxBounds(part);
       const auto clusters = map_->map().frontierClusters(bounds.min, bounds.max, 3);
@@ -201,10 +207,7 @@ Slei3dStrategy::Plan Slei3dStrategy::planExploration(const agent::AgentView& vie
   const auto& grid = map_->grid();
   const double clearance = flight_->requiredClearance(grid);
   // The detector first: the mapped surface of the box it has not passed close to.
-  std::vector<planning::InspectionPatch> open;
-  for (const auto& patch :
-       planning::groupSurface(map_->surfaceNearBoxes({box}, kSurfaceNearBox), kPatchSize))
-    if (!swept_.count(patch.key)) open.push_back(patch);
+  std::vector<planning::InspectionPatch> open = unsweptPatches(box);
   openPatches_ = 0;
   if (open.size() > kPatchesPerPlan) {
     std::stable_sort(open.begin(), open.end(), [&](const auto& a, const auto& b) {

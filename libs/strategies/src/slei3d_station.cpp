@@ -73,12 +73,15 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
                              std::max(kMinRemaining, options_.maxMeetingLead));
     const Vec3 here = view.odometry.position;
     const bool known = report->box >= 0 && static_cast<size_t>(report->box) < boxes_.size();
-    double largestFree = 0.0;
-    for (size_t b = 0; b < boxes_.size(); ++b)
-      if (!boxTaken_[b]) largestFree = std::max(largestFree, boxes_[b].size.prod());
+    const auto largestFree = [&] {
+      double largest = 0.0;
+      for (size_t b = 0; b < boxes_.size(); ++b)
+        if (!boxTaken_[b]) largest = std::max(largest, boxes_[b].size.prod());
+      return largest;
+    };
     if (options_.unknownWorkspace && !fixedRegions() && known && !report->boxFinished &&
         !report->remainder.empty() &&
-        boxes_[static_cast<size_t>(report->box)].size.prod() > kLargerBox * largestFree) {
+        boxes_[static_cast<size_t>(report->box)].size.prod() > kLargerBox * largestFree()) {
       // The paper's octree partition of what is left, for a box larger than every free one (so
       // the next subgroup done with its own finds one; the work stays in boxes of about one
       // size): the box's parts with work join the free boxes (the box itself stays taken: its

@@ -152,6 +152,8 @@ class Slei3dStrategy : public agent::Strategy {
   // The unknown workspace: the octree parts of its box that still hold work (open surface or a
   // frontier), for its report; none for a leaf.
   std::vector<agent::BoxView> remainderParts() const;
+  // The mapped surface patches of `box` (and within 1 m of it) its detector has not swept.
+  std::vector<planning::InspectionPatch> unsweptPatches(const agent::BoxView& box) const;
   // Inspectors of a lost explorer, given by the station: met where they should wait and told of
   // this subgroup's wait point.
   void adoptInspectors(const agent::AgentView& view, const std::vector<Adoption>& adopt);
