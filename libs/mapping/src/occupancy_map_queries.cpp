@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 
 #include "batch_octree.h"
 #include "coinspect/core/error.h"
@@ -165,6 +166,28 @@ VoxelGrid OccupancyMap::toVoxelGrid(const Vec3& min, const Vec3& max, double res
   VoxelGrid grid(min, resolution, size);
   fillGrid(*tree_, grid);
   return grid;
+}
+
+std::vector<FrontierCluster> splitFrontierClusters(const std::vector<FrontierCluster>& clusters,
+                                                   double chunk) {
+  std::vector<FrontierCluster> out;
+  for (const auto& cluster : clusters) {
+    std::map<std::array<int64_t, 3>, FrontierCluster> parts;  // ordered: deterministic
+    for (const Vec3& c : cluster.cells) {
+      const std::array<int64_t, 3> key{static_cast<int64_t>(std::floor(c.x() / chunk)),
+                                       static_cast<int64_t>(std::floor(c.y() / chunk)),
+                                       static_cast<int64_t>(std::floor(c.z() / chunk))};
+      parts[key].cells.push_back(c);
+    }
+    for (auto& [key, part] : parts) {
+      Vec3 sum = Vec3::Zero();
+      for (const Vec3& c : part.cells)
+        sum += c;
+      part.centroid = sum / static_cast<double>(part.cells.size());
+      out.push_back(std::move(part));
+    }
+  }
+  return out;
 }
 
 std::vector<FrontierCluster> OccupancyMap::frontierClusters(const Vec3& min, const Vec3& max,

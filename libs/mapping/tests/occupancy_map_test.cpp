@@ -257,6 +257,27 @@ TEST(OccupancyMap, FrontierClustersOfASyntheticScene) {
   EXPECT_EQ(onlyB[0].cells.size(), 8U);
 }
 
+// A frontier along a 10 m roof ridge, cut into 4 m cubes: three parts, each with its own centroid;
+// a cluster inside one cube stays as it was.
+TEST(OccupancyMap, LargeFrontierClustersAreSplitIntoCubes) {
+  FrontierCluster ridge;
+  for (double x = 0.25; x < 10.0; x += 0.5)
+    ridge.cells.push_back(Vec3(x, 1.25, 6.25));
+  FrontierCluster small;
+  small.cells = {Vec3(20.25, 1.25, 1.25), Vec3(20.75, 1.25, 1.25)};
+  small.centroid = Vec3(20.5, 1.25, 1.25);
+  const auto parts = splitFrontierClusters({ridge, small}, 4.0);
+  ASSERT_EQ(parts.size(), 4U);
+  EXPECT_EQ(parts[0].cells.size(), 8U);  // x in [0, 4)
+  EXPECT_EQ(parts[1].cells.size(), 8U);  // [4, 8)
+  EXPECT_EQ(parts[2].cells.size(), 4U);  // [8, 10)
+  EXPECT_LT((parts[0].centroid - Vec3(2.0, 1.25, 6.25)).norm(), 1e-12);
+  EXPECT_LT((parts[2].centroid - Vec3(9.0, 1.25, 6.25)).norm(), 1e-12);
+  EXPECT_EQ(parts[3].cells, small.cells);
+  EXPECT_LT((parts[3].centroid - small.centroid).norm(), 1e-12);
+  EXPECT_TRUE(splitFrontierClusters({}, 4.0).empty());
+}
+
 // An axis-aligned box seen from far away along each axis: face cells of 0.5 m from 2.0 to 6.0.
 TEST(OccupancyMap, SurfaceVoxelsOfABoxHaveOutwardNormals) {
   OccupancyMap map({0.5, 60.0});

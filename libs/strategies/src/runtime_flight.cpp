@@ -18,6 +18,8 @@ constexpr double kPocketVolume = 100.0;
 // often opens again as the map fills in (then the unit goes on at the full clearance), and
 // flying closer to surfaces is for a unit that is stuck.
 constexpr double kTrappedPatience = 10.0;
+// m/s: a neighbour slower than this stays where it is (it waits or holds).
+constexpr double kStill = 0.3;
 
 }  // namespace
 
@@ -251,8 +253,15 @@ agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const Robo
       near = (profile_.pointAt(profile_.travelled() + ahead) - other).norm() < options_.separation;
     if (!near) continue;
     *holding = true;
-    // Step aside when it closes in: across its motion, and up.
+    // One that stays where it is (waiting, or holding itself) would hold this one for good: it
+    // is planned around after the same patience, kept `separation` away (two inspectors of
+    // slei-b: the second held 3 m from its wait point behind the first, waiting at its own,
+    // for the rest of a run).
     const Vec3 velocity = neighbour.odometry.velocity;
+    if (blockers && velocity.norm() < kStill)
+      blockers->push_back(
+          {other, options_.separation + 0.5 * map.grid().resolution() * std::sqrt(3.0)});
+    // Step aside when it closes in: across its motion, and up.
     if (distance > 1e-6 && velocity.dot(offset / distance) > 0.2) {
       Vec3 across = offset - velocity.normalized() * velocity.normalized().dot(offset);
       across = across.norm() > 1e-3 ? Vec3(across.normalized()) : Vec3::Zero();

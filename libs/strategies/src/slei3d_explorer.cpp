@@ -267,7 +267,14 @@ Slei3dStrategy::Plan Slei3dStrategy::planExploration(const agent::AgentView& vie
   // Then the parts of the box the LiDAR has not mapped: FUEL-style frontier viewpoints.
   const auto bounds = runtime::boxBounds(box);
   const Vec3 margin = Vec3::Constant(kBoxMargin);
-  const auto clusters = map_->map().frontierClusters(bounds.min - margin, bounds.max + margin, 3);
+  // With `frontier_chunk`, in parts of that many metres: whole, the frontier above a roof was one
+  // cluster, flown to once and then never again, and the roof was never seen from above (on
+  // slei-a, 19 of 25 features never detected in a run were on roofs the explorers never rose
+  // above). Off by default: the parts find more features, but the visits cost more than they
+  // bring in a 1200 s slei-a mission (doc/strategies.md, "Exploring").
+  auto clusters = map_->map().frontierClusters(bounds.min - margin, bounds.max + margin, 3);
+  if (options_.frontierChunk > 0.0)
+    clusters = mapping::splitFrontierClusters(clusters, options_.frontierChunk);
   star::RingOptions ring;
   ring.clearance = clearance;
   ring.minZ = groundZ_ + 1.5;
@@ -276,7 +283,8 @@ Slei3dStrategy::Plan Slei3dStrategy::planExploration(const agent::AgentView& vie
     const bool visited = std::any_of(unreachable_.begin(), unreachable_.end(), [&](const Vec3& p) {
       return (p - cluster.centroid).norm() < kUnreachableRadius;
     });
-    if (!visited && cluster.centroid.z() > groundZ_ + 0.5) order.push_back(&cluster);
+    if (!visited && cluster.centroid.z() > groundZ_ + 0.5 && cluster.cells.size() >= 3)
+      order.push_back(&cluster);
   }
   std::stable_sort(order.begin(), order.end(), [&](const auto* a, const auto* b) {
     return (a->centroid - here).squaredNorm() < (b->centroid - here).squaredNorm();
@@ -303,7 +311,8 @@ Slei3dStrategy::Plan Slei3dStrategy::planExploration(const agent::AgentView& vie
 // station soonest; none when that is not well before the explorer's own meeting. The station
 // drives straight to its next stop after each meeting (it was where this explorer met it at the
 // last reply) and leaves a stop once its meeting is held, about the stop's time.
-std::optional<Vec3> Slei3dStrategy::earlyStop(const agent::AgentView& view, double* by) const {
+std::optional<Vec3> Slei3dStrategy::earlyStop(const agent::AgentView& view, double* by,
+                                              size_t* index) const {
   constexpr double kWorthIt = 20.0;  // s saved at least
   const Vec3 here = view.odometry.position;
   const auto drive = [&](const Vec3& a, const Vec3& b) {
@@ -313,11 +322,12 @@ std::optional<Vec3> Slei3dStrategy::earlyStop(const agent::AgentView& view, doub
   double soonest = stationMeeting_.time - kWorthIt;
   double free = lastReply_.time;  // when the station can leave for the next stop
   Vec3 from = lastReply_.place;
-  for (const auto& stop : stationStops_) {
+  for (size_t k = 0; k < stationStops_.size(); ++k) {
+    const auto& stop = stationStops_[k];
     const double arrives = free + drive(from, stop.place);
     const bool own = stop.time >= stationMeeting_.time;
     const double at = std::max(arrives, view.time + straightTime(here, stop.place, options_.speed));
-    if ((own || at <= stop.time) && at < soonest) soonest = *by = at, best = stop.place;
+    if ((own || at <= stop.time) && at < soonest) soonest = *by = at, best = stop.place, *index = k;
     if (own) break;
     free = std::max(arrives, stop.time) + kMeetingService;
     from = stop.place;
@@ -663,6 +673,7 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
     ++meetingNumber_;
     stationMeeting_ = reply->next;
     stationStops_ = reply->stops;
+    nextBox_ = reply->nextBox;
     lastReply_ = {here, view.time};
     earlyPlace_.reset();
     earlyTried_ = false;
@@ -702,10 +713,19 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
   // features cannot be handed out: they do not hold the box.
   const bool nothingToHand = pending_.empty() || inspectors_.empty();
   const bool boxDone = box_ >= 0 && explorationFinished_ && nothingToHand && handouts_.empty();
+  // With its next box reserved it goes on to it as soon as this one is explored: its features
+  // still pending are handed out from there, and the meeting stays where and when it was (the
+  // report then names the new box).
+  if (nextBox_ >= 0 && box_ >= 0 && explorationFinished_ && handouts_.empty() &&
+      phase_ == ExplorerPhase::Exploring) {
+    const int32_t next = nextBox_;
+    nextBox_ = -1;
+    enterBox(view, next);
+  }
   if (boxDone && (phase_ == ExplorerPhase::Exploring || phase_ == ExplorerPhase::Done) &&
       !earlyPlace_ && !earlyTried_) {
     earlyTried_ = true;  // once per reply: the schedule it knows grows stale
-    earlyPlace_ = earlyStop(view, &earlyBy_);
+    earlyPlace_ = earlyStop(view, &earlyBy_, &earlyStop_);
     if (earlyPlace_) {
       phase_ = ExplorerPhase::ToStation;
       goToStation(view, *earlyPlace_);
@@ -729,12 +749,22 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
   switch (phase_) {
     case ExplorerPhase::ToStation:
     case ExplorerPhase::AtStation: {
-      // The station did not come to the early stop (its schedule changed since the explorer
-      // learnt it): on to the planned meeting place.
+      // The station did not come to the early stop: it is late on the schedule the explorer
+      // knows (a subgroup before it got a new meeting at the same place, say), so it is still
+      // at an earlier stop or on its way from one. The explorer goes back along the station's
+      // route, stop by stop, and then to the planned meeting place. (Waiting there instead
+      // left a slei-a explorer idle from 190 s to 473 s while the station stood 14 m away.)
       if (earlyPlace_ && phase_ == ExplorerPhase::ToStation &&
           view.time > earlyBy_ + kEarlyPatience) {
-        earlyPlace_.reset();
-        goToStation(view, stationMeeting_.place);
+        if (earlyStop_ > 0 && earlyStop_ <= stationStops_.size()) {
+          --earlyStop_;
+          earlyPlace_ = stationStops_[earlyStop_].place;
+          earlyBy_ = view.time + straightTime(here, *earlyPlace_, options_.speed);
+          goToStation(view, *earlyPlace_);
+        } else {
+          earlyPlace_.reset();
+          goToStation(view, stationMeeting_.place);
+        }
       }
       if (flight_->failed() && view.time - lastApproach_ >= kApproachRetry)
         goToStation(view, stationPlace);

@@ -73,6 +73,10 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
                              std::max(kMinRemaining, options_.maxMeetingLead));
     const Vec3 here = view.odometry.position;
     const bool known = report->box >= 0 && static_cast<size_t>(report->box) < boxes_.size();
+    // Done before this meeting, it went on to the box the last reply reserved: its box now.
+    const auto reservation = reserved_.find(explorer);
+    const bool movedOn = reservation != reserved_.end() && report->box == reservation->second;
+    if (movedOn) reserved_.erase(reservation);
     const auto largestFree = [&] {
       double largest = 0.0;
       for (size_t b = 0; b < boxes_.size(); ++b)
@@ -103,21 +107,26 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
     }
     if (report->boxFinished && known) {
       // Rolling assignment: the free box nearest the finished one, for the whole subgroup
-      // (slei-pre: the next of its fixed order).
-      if (fixedRegions()) {
-        const size_t index = subgroupIndex(explorer);
-        auto* order = index < boxOrder_.size() ? &boxOrder_[index] : nullptr;
-        reply.box = !order || order->empty() ? -1 : order->front();
-        if (order && !order->empty()) order->erase(order->begin());
+      // (slei-pre: the next of its fixed order), or the one reserved for it at the last reply.
+      const auto next = reserved_.find(explorer);
+      if (next != reserved_.end()) {
+        reply.box = next->second;
+        reserved_.erase(next);
       } else {
-        reply.box =
-            nearestFreeBox(boxes_, boxTaken_, boxes_[static_cast<size_t>(report->box)].center);
+        reply.box = takeNextBox(explorer, report->box);
       }
-      if (reply.box >= 0) {
-        boxTaken_[static_cast<size_t>(reply.box)] = 1;
-        lead = kNewBoxLead;
-      }
+      if (reply.box >= 0) lead = kNewBoxLead;
     }
+    // The box after it, reserved now: an explorer done before its next meeting goes on to it
+    // rather than wait for the station, which cannot know it is done (slei-a: explorers done
+    // with a small box waited up to 480 s for a meeting eq. 9 had put 600 s ahead).
+    if (options_.reserveNextBox && !options_.unknownWorkspace && reply.box >= 0 &&
+        !reserved_.count(explorer)) {
+      const int32_t next = takeNextBox(explorer, reply.box);
+      if (next >= 0) reserved_[explorer] = next;
+    }
+    const auto reservedNow = reserved_.find(explorer);
+    reply.nextBox = reservedNow != reserved_.end() ? reservedNow->second : -1;
     if (options_.unknownWorkspace && reply.box >= 0)
       reply.boxShape = boxes_[static_cast<size_t>(reply.box)];
     if (report->boxFinished && report->box < 0 && report->remaining <= 0.0) {
@@ -158,7 +167,8 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
     }
     // Its inspectors wait off the new box's corner nearest where it came from (here, within a
     // link of it); a lost explorer's inspectors go to the next explorer with a box that reports.
-    if (reply.box >= 0 && reply.box != report->box && options_.variant != SleiVariant::Team) {
+    if (reply.box >= 0 && (reply.box != report->box || movedOn) &&
+        options_.variant != SleiVariant::Team) {
       enteredFrom_[explorer] = here;
       auto& members = members_[explorer];
       for (size_t k = 0; k < members.size(); ++k)
@@ -196,18 +206,45 @@ void Slei3dStrategy::orphanInspectors(uint32_t explorer) {
   lost_.insert(explorer);
 }
 
+// A lost explorer's box and the one reserved for it go back. It may have finished the first
+// and gone on to the second: the station cannot tell, so both are explored again.
 void Slei3dStrategy::releaseBox(uint32_t explorer) {
   const auto answered = answered_.find(explorer);
   int32_t box = answered != answered_.end() ? answered->second.box : -1;
   if (answered == answered_.end() && plan_)
     for (const auto& s : plan_->subgroups)
       if (s.explorer == explorer) box = s.box;
+  returnBox(explorer, box);
+  const auto next = reserved_.find(explorer);
+  if (next == reserved_.end()) return;
+  const int32_t reserved = next->second;
+  reserved_.erase(next);
+  returnBox(explorer, reserved);
+}
+
+void Slei3dStrategy::returnBox(uint32_t explorer, int32_t box) {
   if (box < 0) return;
   if (!fixedRegions()) {
     boxTaken_[static_cast<size_t>(box)] = 0;
     return;
   }
   giveBoxToShortestOrder(boxOrder_, subgroupIndex(explorer), box);
+}
+
+int32_t Slei3dStrategy::takeNextBox(uint32_t explorer, int32_t after) {
+  int32_t box = -1;
+  if (fixedRegions()) {
+    const size_t index = subgroupIndex(explorer);
+    auto* order = index < boxOrder_.size() ? &boxOrder_[index] : nullptr;
+    if (order && !order->empty()) {
+      box = order->front();
+      order->erase(order->begin());
+    }
+  } else {
+    box = nearestFreeBox(boxes_, boxTaken_, boxes_[static_cast<size_t>(after)].center);
+  }
+  if (box >= 0) boxTaken_[static_cast<size_t>(box)] = 1;
+  return box;
 }
 
 size_t Slei3dStrategy::subgroupIndex(uint32_t explorer) const {

@@ -19,6 +19,10 @@ constexpr double kFloodPeriod = 1.0;   // s between broadcasts of the plan
 constexpr double kFloodUntil = 120.0;  // s: by then every robot holds the plan
 constexpr size_t kFramesPerDecision = 8;
 constexpr double kRelayCircle = 3.0;  // m from caric-team's relay where its inspectors wait
+// m beyond the flight's hold distance between two inspectors' wait points (2.5 m apart, a
+// waiting inspector held the next one 3 m off its point for a whole slei-a run, where its
+// explorer, looking for it at its point, missed it at every hand-out)
+constexpr double kWaitSpacing = 1.0;
 constexpr double kReferenceDetectRange = 5.0;  // m, the detector the explorer's model assumes
 
 }  // namespace
@@ -112,10 +116,10 @@ Vec3 Slei3dStrategy::firstWaitPoint(const Subgroup& subgroup, size_t k) const {
         ++count;
       }
     }
-    const double angle = 2.0 * M_PI * static_cast<double>(index) / static_cast<double>(count);
     const Vec3& relay = subgroup.firstMeeting.place;
-    return Vec3(relay.x() + kRelayCircle * std::cos(angle),
-                relay.y() + kRelayCircle * std::sin(angle), groundZ_ + options_.meetHeight);
+    const double hold = runtime::FlightOptions{}.separation;
+    return relayWaitPoint(Vec3(relay.x(), relay.y(), groundZ_ + options_.meetHeight), index, count,
+                          kRelayCircle, hold, hold + kWaitSpacing);
   }
   return waitPointNear(subgroup.box, subgroup.firstMeeting.place, k);
 }
@@ -127,8 +131,9 @@ Vec3 Slei3dStrategy::waitPointNear(int32_t box, const Vec3& from, size_t k) cons
   const Vec3 corner = options_.unknownWorkspace
                           ? from
                           : boxCorner(boxes_, index, options_.plan.cornerOffset, 0.0, from);
-  return awayFromBox(boxes_[index], corner, 2.5 * static_cast<double>(k + 1),
-                     groundZ_ + options_.waitHeight);
+  return waitPointOffCorner(boxes_, index, corner, k,
+                            runtime::FlightOptions{}.separation + kWaitSpacing,
+                            groundZ_ + options_.waitHeight);
 }
 
 void Slei3dStrategy::readPlan(const agent::AgentView& view) {
@@ -263,6 +268,11 @@ SleiOptions readOptions(const Config& config) {
   o.maxMeetingLead = number("max_meeting_lead", o.maxMeetingLead, 50.0, 3600.0);
   o.fixInterval = number("fix_interval", o.fixInterval, 10.0, 3600.0);
   o.plan.evenSplit = config.getBool("slei3d", "even_split", o.plan.evenSplit);
+  o.reserveNextBox = config.getBool("slei3d", "reserve_next_box", o.reserveNextBox);
+  o.frontierChunk = number("frontier_chunk", o.frontierChunk, 0.0, 100.0);
+  if (o.frontierChunk > 0.0 && o.frontierChunk < 1.0)
+    throw InputError(config.source(), "[slei3d] frontier_chunk",
+                     std::to_string(o.frontierChunk) + " is neither 0 (off) nor at least 1 m");
   o.priorityFirst = config.getBool("slei3d", "priority_first", o.priorityFirst);
   o.deadlineBound = config.getBool("slei3d", "deadline_bound", o.deadlineBound);
   o.searchDepth =

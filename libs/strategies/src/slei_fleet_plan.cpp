@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 #include <unordered_set>
 
 #include "coinspect/planning/slei_schedule.h"
@@ -185,6 +186,60 @@ Vec3 awayFromBox(const agent::BoxView& box, const Vec3& corner, double distance,
   const double norm = out.norm();
   out = norm > 1e-9 ? Vec3(out / norm) : Vec3::UnitX();
   return Vec3(corner.x(), corner.y(), z) + distance * out;
+}
+
+Vec3 waitPointOffCorner(const std::vector<agent::BoxView>& boxes, size_t index, const Vec3& corner,
+                        size_t k, double spacing, double z) {
+  constexpr double kFirstRow = 3.0;     // m out from the corner
+  constexpr double kBoxClear = 1.5;     // m from every box's footprint
+  constexpr int kRows = 8, kSides = 5;  // lattice extent: rows out, columns either side
+  const Vec3 base = awayFromBox(boxes[index], corner, kFirstRow, z);
+  const Vec3 out = (base - Vec3(corner.x(), corner.y(), z)).normalized();
+  const Vec3 across(-out.y(), out.x(), 0.0);
+  const auto clear = [&](const Vec3& p) {
+    return std::none_of(boxes.begin(), boxes.end(), [&](const agent::BoxView& box) {
+      const Vec3 local = box.rotation.transpose() * (p - box.center);
+      return std::abs(local.x()) < 0.5 * box.size.x() + kBoxClear &&
+             std::abs(local.y()) < 0.5 * box.size.y() + kBoxClear;
+    });
+  };
+  struct Candidate {
+    double distance;
+    int row, column;
+    Vec3 point;
+  };
+  std::vector<Candidate> candidates;
+  for (int row = 0; row < kRows; ++row)
+    for (int column = -kSides; column < kSides; ++column) {
+      const Vec3 p = base + spacing * (row * out + (column + 0.5) * across);
+      candidates.push_back({(p - Vec3(corner.x(), corner.y(), z)).norm(), row, column, p});
+    }
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    return std::tie(a.distance, a.row, a.column) < std::tie(b.distance, b.row, b.column);
+  });
+  size_t seen = 0;
+  for (const auto& c : candidates)
+    if (clear(c.point) && seen++ == k) return c.point;
+  // Boxes all around: the lattice's k-th point, clear or not.
+  return candidates[std::min(k, candidates.size() - 1)].point;
+}
+
+Vec3 relayWaitPoint(const Vec3& relay, size_t index, size_t count, double radius, double minChord,
+                    double ringGap) {
+  // Points on a circle of radius r with chords of at least minChord: 2 pi / (2 asin(c / 2r)).
+  size_t first = 0;
+  for (double r = radius;; r += ringGap) {
+    const double ratio = std::min(1.0, minChord / (2.0 * r));
+    const auto fits =
+        std::max<size_t>(1, static_cast<size_t>(std::floor(M_PI / std::asin(ratio) + 1e-9)));
+    const size_t on = std::min(fits, count - first);
+    if (index < first + on) {
+      const double angle =
+          2.0 * M_PI * static_cast<double>(index - first) / static_cast<double>(on);
+      return relay + Vec3(r * std::cos(angle), r * std::sin(angle), 0.0);
+    }
+    first += on;
+  }
 }
 
 std::vector<StationShare> stationShares(const std::vector<agent::FleetMember>& fleet,

@@ -140,6 +140,7 @@ std::vector<uint8_t> encode(const Reply& reply) {
   w.f64(reply.chargeFrom);
   w.u8(reply.boxShape ? 1 : 0);
   if (reply.boxShape) put(w, *reply.boxShape);
+  w.i32(reply.nextBox);
   return w.take();
 }
 
@@ -165,6 +166,7 @@ std::optional<Reply> decodeReply(const std::vector<uint8_t>& bytes) {
     ok = get(r, &shape);
     reply.boxShape = shape;
   }
+  ok = ok && r.i32(&reply.nextBox) && reply.nextBox >= -1;
   return finished(r, ok, std::move(reply));
 }
 

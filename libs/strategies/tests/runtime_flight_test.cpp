@@ -308,12 +308,13 @@ struct TwoUnits {
     o.takeoffHeight = 1.0;
     return o;
   }
-  // The other unit, hovering at `position`.
-  void addOther(const Vec3& position) {
+  // The other unit, at `position`, hovering or moving at `velocity`.
+  void addOther(const Vec3& position, const Vec3& velocity = Vec3::Zero()) {
     agent::NeighbourInfo other;
     other.name = vehicle.view.name == "first" ? "second" : "first";
     other.role = agent::Role::Photographer;
     other.odometry.position = position;
+    other.odometry.velocity = velocity;
     vehicle.view.neighbours.push_back(other);
   }
   void step() { vehicle.apply(flight.step(vehicle.view, map), 0.1); }
@@ -327,7 +328,7 @@ TEST(Flight, LowerPriorityHoldsForAHigherPriorityNeighbourOnItsPath) {
   TwoUnits units({0, 30, 6}, 1);
   units.flight.goTo(Vec3(0, 40, 5), 2.0);
   const Vec3 other(0, 25, 5);
-  units.addOther(other);  // hovering 3 m ahead
+  units.addOther(other, Vec3(0.5, 0, 0));  // 3 m ahead, moving across
   // It does not fly on; it backs off to `separation`, out of the other's way.
   for (int i = 0; i < 50; ++i) {
     units.step();
@@ -341,6 +342,24 @@ TEST(Flight, LowerPriorityHoldsForAHigherPriorityNeighbourOnItsPath) {
   for (int i = 0; i < 200 && !units.flight.done(); ++i)
     units.step();
   EXPECT_TRUE(units.flight.done());
+}
+
+TEST(Flight, LowerPriorityGoesAroundAHigherPriorityNeighbourThatStaysOnItsPath) {
+  // Two inspectors of slei-b: the second held behind the first, waiting at its own wait point,
+  // for the rest of a run.
+  TwoUnits units({9, 30, 6}, 1);  // the box off the straight line
+  const Vec3 goal(0, 40, 5), other(0, 27, 5);
+  units.flight.goTo(goal, 2.0);
+  units.addOther(other);  // hovering on the straight line
+  const auto options = TwoUnits::options();
+  double nearest = 1e9;
+  for (int i = 0; i < 600 && !units.flight.done(); ++i) {
+    units.step();
+    nearest = std::min(nearest, (units.vehicle.view.odometry.position - other).norm());
+  }
+  EXPECT_TRUE(units.flight.done());
+  EXPECT_LT((units.vehicle.view.odometry.position - goal).norm(), 0.6);
+  EXPECT_GE(nearest, options.separation - 1.5);  // around it, not through its hold distance
 }
 
 TEST(Flight, HigherPriorityStopsShortOfALowerPriorityUnitInItsWayThenGoesAround) {

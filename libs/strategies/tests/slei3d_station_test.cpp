@@ -1,4 +1,5 @@
-// The slei3d ground station driven by hand: the unknown workspace's slabs and octree parts.
+// The slei3d ground station driven by hand: the unknown workspace's slabs and octree parts, the
+// reserved next box.
 #include <gtest/gtest.h>
 
 #include <optional>
@@ -37,12 +38,13 @@ agent::StrategyContext stationContext(const Config& config) {
 const std::vector<agent::BoxView> kBoxes = {makeBox(Vec3(0, 0, 5), Vec3(10, 10, 10)),
                                             makeBox(Vec3(30, 0, 5), Vec3(10, 10, 10))};
 
-agent::AgentView stationView(double time, const std::vector<agent::ReceivedMessage>& messages) {
+agent::AgentView stationView(double time, const std::vector<agent::ReceivedMessage>& messages,
+                             const std::vector<agent::BoxView>* boxes = &kBoxes) {
   agent::AgentView view;
   view.name = "gcs";
   view.role = Role::GroundStation;
   view.alive = true;
-  view.boxes = &kBoxes;
+  view.boxes = boxes;
   view.time = time;
   view.odometry.position = Vec3(15, -15, 0.1);
   view.neighbours = {{"e1", Role::Explorer, {}}, {"e2", Role::Explorer, {}}};
@@ -164,14 +166,77 @@ TEST(Slei3dStation, WithTheBoxesKnownAReportedRemainderChangesNothing) {
   EXPECT_FALSE(reply->boxShape);
 }
 
+// Four 10 m cubes in a row, A at x = 0 and B at 20 by the station, C at 100 and D at 120 far off.
+const std::vector<agent::BoxView> kRow = {
+    makeBox(Vec3(0, 0, 5), Vec3(10, 10, 10)), makeBox(Vec3(20, 0, 5), Vec3(10, 10, 10)),
+    makeBox(Vec3(100, 0, 5), Vec3(10, 10, 10)), makeBox(Vec3(120, 0, 5), Vec3(10, 10, 10))};
+
+std::optional<Reply> replyTo(agent::Strategy& station, const std::string& explorer, double time,
+                             const Report& report) {
+  auto view = stationView(time, {{explorer, kReportTopic, encode(report)}}, &kRow);
+  view.odometry.position = Vec3(0, -15, 0.1);
+  return sent<Reply>(station.decide(view), explorer, kReplyTopic, decodeReply);
+}
+
+Report reportOf(int32_t box, bool finished, uint32_t meetingNumber) {
+  Report report;
+  report.box = box;
+  report.boxFinished = finished;
+  report.remaining = 100.0;
+  report.meetingNumber = meetingNumber;
+  return report;
+}
+
+TEST(Slei3dStation, EachReplyReservesTheSubgroupsNextBox) {
+  agent::StrategyRegistry registry;
+  registerSlei3d(registry);
+  const auto config = Config::fromText("", "run.ini");
+  auto station = registry.create("slei3d", stationContext(config));
+  auto first = stationView(0.0, {}, &kRow);
+  first.odometry.position = Vec3(0, -15, 0.1);
+  station->decide(first);  // the plan: e1 takes A (nearest the station), e2 then B
+  // e1 reports A not done: it keeps A, and C (the free box nearest A) is reserved for it.
+  const auto toE1 = replyTo(*station, "e1", 60.0, reportOf(0, false, 1));
+  ASSERT_TRUE(toE1);
+  EXPECT_EQ(toE1->box, 0);
+  EXPECT_EQ(toE1->nextBox, 2);
+  // e2 done with B: C is taken, so D; nothing is left to reserve.
+  const auto toE2 = replyTo(*station, "e2", 70.0, reportOf(1, true, 1));
+  ASSERT_TRUE(toE2);
+  EXPECT_EQ(toE2->box, 3);
+  EXPECT_EQ(toE2->nextBox, -1);
+  // e1 went on to C by itself before its next meeting: C is its box now.
+  const auto again = replyTo(*station, "e1", 160.0, reportOf(2, false, 2));
+  ASSERT_TRUE(again);
+  EXPECT_EQ(again->box, 2);
+  EXPECT_EQ(again->nextBox, -1);
+
+  // The paper's rule (off): no reservation, and e2 done with B gets C, the free box nearest B.
+  const auto off = Config::fromText("[slei3d]\nreserve_next_box = false\n", "run.ini");
+  auto plain = registry.create("slei3d", stationContext(off));
+  plain->decide(first);
+  EXPECT_EQ(replyTo(*plain, "e1", 60.0, reportOf(0, false, 1))->nextBox, -1);
+  EXPECT_EQ(replyTo(*plain, "e2", 70.0, reportOf(1, true, 1))->box, 2);
+  // slei-pre's fixed orders: the next box of its own list (e1: A, then C).
+  auto pre = registry.create("slei-pre", stationContext(config));
+  pre->decide(first);
+  const auto fixed = replyTo(*pre, "e1", 60.0, reportOf(0, false, 1));
+  ASSERT_TRUE(fixed);
+  EXPECT_GE(fixed->nextBox, 2);
+  EXPECT_EQ(replyTo(*pre, "e1", 120.0, reportOf(0, true, 2))->box, fixed->nextBox);
+}
+
 TEST(Slei3dStation, BadWorkspaceAndSearchKeysAreErrors) {
   agent::StrategyRegistry registry;
   registerSlei3d(registry);
-  for (const auto& [text, key] :
-       std::vector<std::pair<std::string, std::string>>{{"workspace = guess", "workspace"},
-                                                        {"leaf_edge = 0", "leaf_edge"},
-                                                        {"search_depth = 7", "search_depth"},
-                                                        {"search_depth = -1", "search_depth"}}) {
+  for (const auto& [text, key] : std::vector<std::pair<std::string, std::string>>{
+           {"workspace = guess", "workspace"},
+           {"leaf_edge = 0", "leaf_edge"},
+           {"search_depth = 7", "search_depth"},
+           {"search_depth = -1", "search_depth"},
+           {"reserve_next_box = 2", "reserve_next_box"},
+           {"frontier_chunk = 0.5", "frontier_chunk"},
+           {"frontier_chunk = -1", "frontier_chunk"}}) {
     const auto config = Config::fromText("[slei3d]\n" + text + "\n", "bad.ini");
     const auto message =
         testing::messageOf([&] { registry.create("slei3d", stationContext(config)); });

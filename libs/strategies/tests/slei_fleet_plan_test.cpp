@@ -72,6 +72,45 @@ TEST(SleiFleetPlan, CornersLieOutsideTheBoxAndAwayFromIt) {
   EXPECT_DOUBLE_EQ(away.z(), 6.0);
 }
 
+// Any two wait points farther apart than the flight's 4 m hold distance (2.5 m apart on one
+// line, a waiting inspector held the next one off its point for a whole run), outside the box.
+TEST(SleiFleetPlan, WaitPointsStandFartherApartThanTheHoldDistance) {
+  const auto box = makeBox({0, 0, 5}, {10, 6, 10});
+  const Vec3 corner = boxCorner(box, 2.0, 0.5, {20, 20, 0});
+  std::vector<Vec3> points;
+  for (size_t k = 0; k < 10; ++k) {
+    points.push_back(waitPointOffCorner({box}, 0, corner, k, 5.0, 6.0));
+    EXPECT_DOUBLE_EQ(points.back().z(), 6.0);
+    EXPECT_TRUE(points.back().x() > 6.5 || points.back().y() > 4.5) << k;  // 1.5 m off the box
+    EXPECT_LT((points.back() - Vec3(corner.x(), corner.y(), 6.0)).norm(), 15.0) << k;
+  }
+  for (size_t i = 0; i < points.size(); ++i)
+    for (size_t j = i + 1; j < points.size(); ++j)
+      EXPECT_GE((points[i] - points[j]).norm(), 5.0 - 1e-9) << i << " " << j;
+  // The first two either side of the line from the centre through the corner, 3 m out.
+  const Vec3 middle = 0.5 * (points[0] + points[1]);
+  EXPECT_TRUE(middle.isApprox(awayFromBox(box, corner, 3.0, 6.0), 1e-9));
+  // Another box where the first one would be: it is left out, the others move up.
+  const Vec3 first = points[0];
+  const auto neighbour = makeBox(Vec3(first.x(), first.y(), 5), {2, 2, 10});
+  EXPECT_TRUE(waitPointOffCorner({box, neighbour}, 0, corner, 0, 5.0, 6.0).isApprox(points[1]));
+
+  // caric-team's relay: 4 on the first circle of 3 m (as before), then a wider one; no two
+  // closer than the hold distance.
+  const Vec3 relay(0, 0, 3);
+  std::vector<Vec3> around;
+  for (size_t i = 0; i < 9; ++i)
+    around.push_back(relayWaitPoint(relay, i, 9, 3.0, 4.0, 5.0));
+  for (size_t i = 0; i < 4; ++i)
+    EXPECT_NEAR((around[i] - relay).norm(), 3.0, 1e-9) << i;
+  for (size_t i = 4; i < 9; ++i)
+    EXPECT_NEAR((around[i] - relay).norm(), 8.0, 1e-9) << i;
+  for (size_t i = 0; i < around.size(); ++i)
+    for (size_t j = i + 1; j < around.size(); ++j)
+      EXPECT_GT((around[i] - around[j]).norm(), 4.0) << i << " " << j;
+  EXPECT_TRUE(relayWaitPoint(relay, 0, 1, 3.0, 4.0, 5.0).isApprox(Vec3(3, 0, 3), 1e-9));
+}
+
 TEST(SleiFleetPlan, CornersInsideAnotherBoxAreSkipped) {
   // Four boxes as the quadrants of one building (slei-b): the inner corner of a quadrant, 2 m
   // out in x and y, lies inside the diagonally opposite one.

@@ -60,17 +60,27 @@ TEST(SleiProtocol, EveryMessageRoundTrips) {
   EXPECT_EQ(reply->stops[1].time, 200.0);
   auto replyBytes =
       encode(makeReply(4, 5, {Vec3(3, 4, 5), 200.0}, {{Vec3(1, 1, 0), 150.0}}, {}, false));
-  // No shape flag, no charger time, no flag, no adoptions, a stop cut short.
-  replyBytes.resize(replyBytes.size() - 1 - 8 - 1 - 4 - 8);
+  // No next box, no shape flag, no charger time, no flag, no adoptions, a stop cut short.
+  replyBytes.resize(replyBytes.size() - 4 - 1 - 8 - 1 - 4 - 8);
   EXPECT_FALSE(decodeReply(replyBytes));
   replyBytes = encode(makeReply(4, 5, {Vec3(3, 4, 5), 200.0}, {}, {{6, Vec3(7, 8, 9)}}, false));
-  replyBytes.resize(replyBytes.size() - 1 - 8 - 1 - 8);  // an adoption cut short
+  replyBytes.resize(replyBytes.size() - 4 - 1 - 8 - 1 - 8);  // an adoption cut short
   EXPECT_FALSE(decodeReply(replyBytes));
   replyBytes = encode(makeReply(4, 5, {Vec3(3, 4, 5), 200.0}, {}, {}, false));
-  replyBytes[replyBytes.size() - 10] = 2;  // not a flag
+  replyBytes[replyBytes.size() - 14] = 2;  // not a flag
   EXPECT_FALSE(decodeReply(replyBytes));
   replyBytes = encode(makeReply(4, 5, {Vec3(3, 4, 5), 200.0}, {}, {}, false));
-  replyBytes.back() = 2;  // not a shape flag
+  replyBytes[replyBytes.size() - 5] = 2;  // not a shape flag
+  EXPECT_FALSE(decodeReply(replyBytes));
+  // The reserved next box: none by default, a box index, nothing below -1.
+  EXPECT_EQ(decodeReply(encode(makeReply(4, 5, {Vec3(3, 4, 5), 200.0})))->nextBox, -1);
+  Reply reserving = makeReply(4, 5, {Vec3(3, 4, 5), 200.0});
+  reserving.nextBox = 6;
+  EXPECT_EQ(decodeReply(encode(reserving))->nextBox, 6);
+  reserving.nextBox = -2;
+  EXPECT_FALSE(decodeReply(encode(reserving)));
+  replyBytes = encode(makeReply(4, 5, {Vec3(3, 4, 5), 200.0}));
+  replyBytes.resize(replyBytes.size() - 1);  // the next box cut short
   EXPECT_FALSE(decodeReply(replyBytes));
 
   // The unknown workspace's parts: a report's remainder and a reply's box shape.

@@ -204,11 +204,20 @@ std::vector<UnitSpec> sleiFleet(const Vec2& gate, const SleiFleet& size) {
   return fleet;
 }
 
+// Features lie more than this above the ground, as in the reference's feature server, which
+// keeps only the map's points above 1 m (TRIO-PKU/SLEI3D, env_server/feature_server.py).
+constexpr double kFeatureMinHeight = 1.0;
+
 std::vector<InterestPoint> features(const SceneBuilder& scene,
                                     const std::vector<OrientedBox>& boxes, Rng& rng) {
   SurfaceSampling sampling;
   sampling.minSpacing = 0.8;  // only a pool for the farthest-point choice below
-  const auto pool = sampleSurfacePoints(scene, boxes, sampling, rng);
+  auto pool = sampleSurfacePoints(scene, boxes, sampling, rng);
+  pool.erase(std::remove_if(pool.begin(), pool.end(),
+                            [&](const InterestPoint& p) {
+                              return p.position.z() <= sampling.groundZ + kFeatureMinHeight;
+                            }),
+             pool.end());
   return farthestPointSubset(pool, kFeatures, rng);
 }
 

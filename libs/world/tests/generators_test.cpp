@@ -236,6 +236,9 @@ TEST_P(EachGenerator, PointCountAndSpacingFollowTheFamily) {
   const Scenario& s = scenario(name);
   if (specs().at(name).family == "slei") {
     EXPECT_EQ(s.interestPoints.size(), 150u);
+    // As the reference's feature server: none within 1 m of the ground.
+    for (const InterestPoint& p : s.interestPoints.points())
+      EXPECT_GT(p.position.z(), 1.0) << name << " point " << p.index;
   } else {
     const double median = medianSpacing(s.interestPoints);
     EXPECT_GE(median, 0.6) << name;

@@ -38,6 +38,14 @@ struct FrontierCluster {
   Vec3 centroid = Vec3::Zero();
 };
 
+// Each cluster cut into the parts that fall in one cube of `chunk` m (cubes aligned with the
+// origin), parts in ascending cube order, cells in their order within the cluster; a cluster
+// inside one cube stays whole. FUEL splits large frontiers the same way (it halves them along
+// their principal axis): one viewpoint per part instead of one for a frontier that spans a
+// whole roof.
+std::vector<FrontierCluster> splitFrontierClusters(const std::vector<FrontierCluster>& clusters,
+                                                   double chunk);
+
 // An occupied cell next to free space, with an outward normal estimated from its neighbourhood.
 struct SurfaceVoxel {
   Vec3 centre = Vec3::Zero();

@@ -12,7 +12,9 @@
 //
 // Neighbours in line of sight (their odometry is in the view) are deconflicted by priority (fleet
 // order: the lower index goes first): a unit holds while a higher-priority neighbour is within
-// `separation` of its next few metres of path and backs off to `separation` from it, and every
+// `separation` of its next few metres of path and backs off to `separation` from it (after
+// `yieldPatience` it plans around one that stays where it is: a unit waiting at its post held
+// another for good), and every
 // unit closer than `minSeparation` to a neighbour backs away from it (the lower-priority one also
 // climbs); a unit stays where it backed off to (flying back to its reference point brought two
 // units together again). Having the right of way does not mean flying into a unit that holds on

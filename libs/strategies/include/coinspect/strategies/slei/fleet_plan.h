@@ -66,6 +66,23 @@ Vec3 boxCorner(const std::vector<agent::BoxView>& boxes, size_t index, double of
 // where a UAV waits near a corner without crowding the structure or the station there.
 Vec3 awayFromBox(const agent::BoxView& box, const Vec3& corner, double distance, double z);
 
+// Where inspector k of a subgroup waits off box `index`'s corner, at height z: the k-th point,
+// nearest the corner first, of a square lattice `spacing` apart that starts 3 m out on the line
+// from the box's centre through the corner (two columns either side of it) and leaves out points
+// within 1.5 m of any box's footprint (another structure: unknown space, and no way there). The
+// spacing must exceed the flight's hold distance to a higher-priority neighbour
+// (runtime::FlightOptions::separation): one waiting at its point otherwise holds the next away
+// from its own for good.
+Vec3 waitPointOffCorner(const std::vector<agent::BoxView>& boxes, size_t index, const Vec3& corner,
+                        size_t k, double spacing, double z);
+
+// caric-team: where the index-th of `count` inspectors waits around the relay, on circles about
+// it at its height: the first of radius `radius`, each next one `ringGap` further out, as many
+// on a circle as it holds with neighbours at least `minChord` apart (the flight's hold distance:
+// 4 on the first when `radius` is 3 m, 4.24 m apart), spread evenly.
+Vec3 relayWaitPoint(const Vec3& relay, size_t index, size_t count, double radius, double minChord,
+                    double ringGap);
+
 // Which of the station's meetings (their times, in the order it plans to serve them) it drives
 // to now: the first, unless the first is not due yet and another one is overdue (its time has
 // passed), then the earliest overdue one. The order with time windows puts a window it can no

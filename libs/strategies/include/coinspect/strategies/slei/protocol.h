@@ -90,6 +90,9 @@ struct Reply {
   double chargeFrom = 0.0;
   // The unknown workspace: the shape of `box`, a part the station made (world-aligned).
   std::optional<agent::BoxView> boxShape;
+  // The subgroup's next box, reserved for it (-1: none): it goes on to it when done with `box`
+  // before the next meeting, and says so in its report.
+  int32_t nextBox = -1;
 };
 
 // An explorer's orders to one of its inspectors: features appended to its list in order, and
