@@ -222,10 +222,11 @@ agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const Robo
     const Vec3 other = neighbour.odometry.position;
     const Vec3 offset = me - other;
     const double distance = offset.norm();
-    const bool higher = priorityOf(neighbour.name) < myPriority;
+    const bool ranked = priorityOf(neighbour.name) < myPriority;
+    const bool higher = ranked && !standGround_;
     if (distance < options_.minSeparation) {
       Vec3 away = distance > 1e-6 ? Vec3(offset / distance) : Vec3::UnitZ();
-      if (!higher)
+      if (!ranked)
         away.z() -= 0.5;  // the higher-priority unit dips, the other climbs
       else
         away.z() += 0.5;

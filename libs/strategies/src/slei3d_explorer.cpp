@@ -620,10 +620,14 @@ agent::AgentCommand Slei3dStrategy::charge(const agent::AgentView& view, uint32_
     chargeLevel_ = view.energy;
     chargeRoseAt_ = view.time;
   }
+  // At the charger it keeps its place: on slei-b an explorer of lower priority, pushed away by
+  // the other one passing by, charged in bits of 1-6 s for 30 s.
+  flight_->standGround(view.time >= chargeFrom_);
   if (view.time < chargeFrom_) {
     flight_->hover();  // the charger is busy: where it met the station, in link
   } else if (view.energy >= kCharged || view.time - chargeRoseAt_ > kChargePatience) {
     charging_ = false;
+    flight_->standGround(false);
     if (phase_ == ExplorerPhase::ToBox) flight_->goTo(boxEntry(box_, boxFrom_), options_.speed);
     lastPlan_ = -1e300;
   } else {

@@ -344,6 +344,33 @@ TEST(Flight, LowerPriorityHoldsForAHigherPriorityNeighbourOnItsPath) {
   EXPECT_TRUE(units.flight.done());
 }
 
+// An explorer charging above its station (slei-b): the other explorer passing within the hold
+// distance pushed it out of the charger's range. Standing its ground it stays put, and only
+// closer than minSeparation does it still back away.
+TEST(Flight, StandingItsGroundItNeitherHoldsNorBacksOffForAHigherPriorityNeighbour) {
+  for (const bool stand : {false, true}) {
+    TwoUnits units({0, 10, 6}, 1);  // the box far away
+    ASSERT_TRUE(units.flight.done());
+    const Vec3 hold = units.vehicle.view.odometry.position;
+    units.flight.standGround(stand);
+    units.addOther(hold + Vec3(3, 0, 0));  // between minSeparation and separation
+    for (int i = 0; i < 50; ++i)
+      units.step();
+    const double moved = (units.vehicle.view.odometry.position - hold).norm();
+    if (stand)
+      EXPECT_LT(moved, 1e-6);
+    else
+      EXPECT_GT(moved, 0.5);  // backed off toward `separation`
+  }
+  TwoUnits units({0, 10, 6}, 1);
+  const Vec3 hold = units.vehicle.view.odometry.position;
+  units.flight.standGround(true);
+  units.addOther(hold + Vec3(1, 0, 0));  // closer than minSeparation
+  for (int i = 0; i < 20; ++i)
+    units.step();
+  EXPECT_GT((units.vehicle.view.odometry.position - hold).norm(), 0.5);
+}
+
 TEST(Flight, LowerPriorityGoesAroundAHigherPriorityNeighbourThatStaysOnItsPath) {
   // Two inspectors of slei-b: the second held behind the first, waiting at its own wait point,
   // for the rest of a run.

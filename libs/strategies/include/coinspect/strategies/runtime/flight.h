@@ -71,6 +71,11 @@ class Flight {
   // Visit every waypoint in order (a blocked one is moved to the nearest clear cell or skipped).
   void follow(const std::vector<Vec3>& route, double speed);
   void hover();
+  // Keep its place against higher-priority neighbours too (it neither holds for them nor backs
+  // off to `separation`; closer than minSeparation both still back away): a unit that must stay
+  // where it is, such as an explorer at its charger, which a passing explorer pushed out of the
+  // charger's range.
+  void standGround(bool on) { standGround_ = on; }
 
   bool takingOff() const { return phase_ == Phase::Takeoff; }
   // The goal or route is done (also after hover()).
@@ -138,6 +143,7 @@ class Flight {
   int failures_ = 0;
   // Since when lower-priority units hold this unit up (-inf: they do not).
   double yieldingSince_ = -std::numeric_limits<double>::infinity();
+  bool standGround_ = false;
   double lastTime_ = 0.0;
   Vec3 takeoffTarget_ = Vec3::Zero();
   size_t guardedSetpoints_ = 0;

@@ -328,7 +328,13 @@ class Slei3dStrategy : public agent::Strategy {
   std::optional<Vec3> afterList_;  // where to go once the list is done (a new box)
   double retryWaitAt_ = 0.0;       // no way to the wait point found: try again then
   std::optional<double> atTaskSince_;
+  // The pose it inspects the first feature of its list from: its own camera view in front of
+  // the feature first, then the explorer's detection pose (taskPoseFor_: the feature it is for).
+  std::optional<Vec3> taskPose_;
+  int64_t taskPoseFor_ = -1;
+  bool ownView_ = false;
   double lastStatus_ = -1e300;
+  Vec3 ownViewpoint(const FeatureTask& task, bool* free) const;
 };
 
 void registerSlei3d(agent::StrategyRegistry& registry);
