@@ -54,9 +54,9 @@ agent::AgentCommand Slei3dStrategy::decideInspector(const agent::AgentView& view
   // inspector ended up (a pose it found no way to, or a stale report of where it was).
   // The explorer's detection pose often sees the feature at a grazing angle (the detector only
   // needs it to face the explorer), where the camera scores nothing: of the features handed out
-  // and never inspected in slei-a runs, most had been detected with the surface normal within 10
-  // deg of square to the line of sight. The inspector first tries its own view in front of the
-  // feature, then the detection pose, each with the full patience; then it skips the feature.
+  // and never inspected in slei-a runs, most had been detected with the line of sight within
+  // 6 deg of the surface. The inspector first tries its own view in front of the feature, then
+  // the detection pose, each with the full patience; then it skips the feature.
   const auto drop = [&] {
     atTaskSince_.reset();
     if (ownView_) {  // the detection pose next
