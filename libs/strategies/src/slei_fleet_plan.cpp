@@ -20,6 +20,15 @@ double horizontal(const Vec3& a, const Vec3& b) {
   return std::hypot(a.x() - b.x(), a.y() - b.y());
 }
 
+// p is horizontally within `margin` of some box's footprint (any height).
+bool nearAFootprint(const std::vector<agent::BoxView>& boxes, const Vec3& p, double margin) {
+  return std::any_of(boxes.begin(), boxes.end(), [&](const agent::BoxView& box) {
+    const Vec3 local = box.rotation.transpose() * (p - box.center);
+    return std::abs(local.x()) < 0.5 * box.size.x() + margin &&
+           std::abs(local.y()) < 0.5 * box.size.y() + margin;
+  });
+}
+
 }  // namespace
 
 std::vector<size_t> inspectorsPerSubgroup(size_t inspectors, size_t explorers, bool even,
@@ -161,12 +170,7 @@ Vec3 boxCorner(const agent::BoxView& box, double offset, double z, const Vec3& f
 
 Vec3 boxCorner(const std::vector<agent::BoxView>& boxes, size_t index, double offset, double z,
                const Vec3& from) {
-  const auto outside = [&](const Vec3& p) {
-    return std::none_of(boxes.begin(), boxes.end(), [&](const agent::BoxView& box) {
-      const Vec3 local = box.rotation.transpose() * (p - box.center);
-      return std::abs(local.x()) < 0.5 * box.size.x() && std::abs(local.y()) < 0.5 * box.size.y();
-    });
-  };
+  const auto outside = [&](const Vec3& p) { return !nearAFootprint(boxes, p, 0.0); };
   const Vec3 nearest = boxCorner(boxes[index], offset, z, from);
   if (outside(nearest)) return nearest;
   const auto bounds = runtime::boxBounds(boxes[index]);
@@ -196,13 +200,7 @@ Vec3 waitPointOffCorner(const std::vector<agent::BoxView>& boxes, size_t index, 
   const Vec3 base = awayFromBox(boxes[index], corner, kFirstRow, z);
   const Vec3 out = (base - Vec3(corner.x(), corner.y(), z)).normalized();
   const Vec3 across(-out.y(), out.x(), 0.0);
-  const auto clear = [&](const Vec3& p) {
-    return std::none_of(boxes.begin(), boxes.end(), [&](const agent::BoxView& box) {
-      const Vec3 local = box.rotation.transpose() * (p - box.center);
-      return std::abs(local.x()) < 0.5 * box.size.x() + kBoxClear &&
-             std::abs(local.y()) < 0.5 * box.size.y() + kBoxClear;
-    });
-  };
+  const auto clear = [&](const Vec3& p) { return !nearAFootprint(boxes, p, kBoxClear); };
   struct Candidate {
     double distance;
     int row, column;
