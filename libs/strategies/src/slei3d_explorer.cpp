@@ -40,6 +40,26 @@ constexpr double kNoMeeting = 1e299;
 constexpr double kCharged = 0.99;         // battery level at which it stops charging
 constexpr double kChargePatience = 20.0;  // s without the level rising: no charger in reach
 constexpr double kChargeHeight = 0.8;     // share of the charge range above the station
+constexpr double kRoofPassRise = 0.5;     // m above the lowest flyable height over a box
+
+// The roof pass over `box` at height `z`: the corner of its footprint nearest `from`, then the
+// opposite one (the flight between crosses the box; from the two corners the LiDAR looks down
+// on all four sides of a stepped roof).
+std::vector<Vec3> roofPassStops(const agent::BoxView& box, const Vec3& from, double z) {
+  const auto footprint = runtime::footprintOf(box);
+  std::vector<Vec3> corners;
+  for (const double su : {-1.0, 1.0})
+    for (const double sv : {-1.0, 1.0}) {
+      const runtime::Vec2 c = footprint.centre + su * footprint.half[0] * footprint.axis[0] +
+                              sv * footprint.half[1] * footprint.axis[1];
+      corners.emplace_back(c.x(), c.y(), z);
+    }
+  size_t nearest = 0;
+  for (size_t k = 1; k < corners.size(); ++k)
+    if ((corners[k] - from).head<2>().norm() < (corners[nearest] - from).head<2>().norm())
+      nearest = k;
+  return {corners[nearest], corners[3 - nearest]};  // index 3 - k is the diagonal opposite
+}
 
 double straightTime(const Vec3& a, const Vec3& b, double speed) {
   return kTravelFactor * (a - b).norm() / speed;
@@ -80,6 +100,15 @@ void Slei3dStrategy::enterBox(const agent::AgentView& view, int32_t box) {
   openPatches_ = 0;
   unreachable_.clear();
   exploreAim_.reset();
+  roofPass_.clear();
+  if (box >= 0 && options_.roofPass && !options_.unknownWorkspace) {
+    // Above the space kept blocked over the box while unknown, with the clearance a path
+    // needs (the flight would not plan into it).
+    const auto& b = boxes_[static_cast<size_t>(box)];
+    const double z = runtime::boxBounds(b).max.z() + options_.unknownBoxMargin +
+                     flight_->requiredClearance(map_->grid()) + kRoofPassRise;
+    roofPass_ = roofPassStops(b, view.odometry.position, z);
+  }
   if (box < 0) {
     phase_ = ExplorerPhase::Done;
     return;
@@ -183,6 +212,7 @@ void Slei3dStrategy::readStatus(const agent::AgentView& view) {
       model.since = view.time;
       model.lostUntil = 0.0;  // in contact: found
       model.heard = view.time;
+      model.listLeft = status->listLeft;
       const auto done = [&](const FeatureTask& t) { return reportedInspected_.count(t.id) > 0; };
       model.tasks.erase(std::remove_if(model.tasks.begin(), model.tasks.end(), done),
                         model.tasks.end());
@@ -263,6 +293,22 @@ Slei3dStrategy::Plan Slei3dStrategy::planExploration(const agent::AgentView& vie
       return Plan::Flying;
     }
     notInTime = !views.empty();
+  }
+  // Then the roofs, seen from above: the surface it maps there is swept at the next plans.
+  if (!roofPass_.empty()) {
+    double arrival = view.time;
+    Vec3 at = here;
+    for (const Vec3& stop : roofPass_)
+      arrival += straightTime(at, stop, options_.speed) + kTurnTime, at = stop;
+    if (arrival + straightTime(at, meeting, options_.speed) <= deadline) {
+      const Vec3 centre(box.center.x(), box.center.y(), roofPass_.front().z());
+      for (const Vec3& stop : roofPass_)
+        sweepRoute_.push_back({stop, centre, {}});
+      exploreAim_ = centre;
+      flight_->goTo(sweepRoute_.front().position, options_.speed);
+      return Plan::Flying;
+    }
+    notInTime = true;
   }
   // Then the parts of the box the LiDAR has not mapped: FUEL-style frontier viewpoints.
   const auto bounds = runtime::boxBounds(box);
@@ -387,14 +433,16 @@ void Slei3dStrategy::markSwept(const agent::AgentView& view) {
 void Slei3dStrategy::followSweep(const agent::AgentView& view) {
   if (sweepRoute_.empty()) return;
   auto& stop = sweepRoute_.front();
-  const bool swept = std::all_of(stop.keys.begin(), stop.keys.end(),
-                                 [&](uint64_t key) { return swept_.count(key) > 0; });
+  const bool swept =
+      !stop.keys.empty() && std::all_of(stop.keys.begin(), stop.keys.end(),
+                                        [&](uint64_t key) { return swept_.count(key) > 0; });
   if (!swept && flight_->done() && atStopSince_ < 0.0) atStopSince_ = view.time;
   const bool givenUp =
       flight_->failed() || (atStopSince_ >= 0.0 && view.time - atStopSince_ >= kTurnTime);
   if (!swept && !givenUp) return;
   for (const uint64_t key : stop.keys)
     if (swept_.insert(key).second) ++sweptInBox_;
+  if (stop.keys.empty() && !roofPass_.empty()) roofPass_.erase(roofPass_.begin());
   sweepRoute_.erase(sweepRoute_.begin());
   atStopSince_ = -1.0;
   if (sweepRoute_.empty()) {
@@ -811,9 +859,12 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
         }
         model.missed = 0;
         model.unconfirmed.clear();  // alive: it keeps its list
-        // Met once its list should be done: what it reported inspected is on board, and
-        // the rest it skipped (or will not do): nothing more to wait for.
-        if (handout.collect) model.tasks.clear();
+        // Met once its list should be done: what it reported inspected is on board. With its
+        // list done, the rest it skipped: nothing more to wait for. Still at it (flights run
+        // later than the plans), it is met again: cleared, its last results stayed with it and
+        // the station, told nothing was outstanding, let its explorer go (slei-pre on slei-a,
+        // scene seed 3: 34 of 145 features inspected never reached the station).
+        if (handout.collect && model.listLeft == 0) model.tasks.clear();
         if (handout.orders.waitAt) {
           model.home = *handout.orders.waitAt;  // it goes there once its list is done
           model.waitAt.reset();

@@ -118,6 +118,7 @@ agent::AgentCommand Slei3dStrategy::decideInspector(const agent::AgentView& view
     Status status;
     status.lastOrders = lastOrders_;
     status.inspected.assign(inspected_.begin(), inspected_.end());
+    status.listLeft = static_cast<uint32_t>(tasks_.size());
     send(command, explorer, kStatusTopic, encode(status));
   }
   auto flown = fly(view, aim);

@@ -273,6 +273,7 @@ SleiOptions readOptions(const Config& config) {
   if (o.frontierChunk > 0.0 && o.frontierChunk < 1.0)
     throw InputError(config.source(), "[slei3d] frontier_chunk",
                      std::to_string(o.frontierChunk) + " is neither 0 (off) nor at least 1 m");
+  o.roofPass = config.getBool("slei3d", "roof_pass", o.roofPass);
   o.priorityFirst = config.getBool("slei3d", "priority_first", o.priorityFirst);
   o.deadlineBound = config.getBool("slei3d", "deadline_bound", o.deadlineBound);
   o.searchDepth =

@@ -205,13 +205,15 @@ std::vector<uint8_t> encode(const Status& status) {
   WireWriter w;
   w.u32(status.lastOrders);
   putIds(w, status.inspected);
+  w.u32(status.listLeft);
   return w.take();
 }
 
 std::optional<Status> decodeStatus(const std::vector<uint8_t>& bytes) {
   WireReader r(bytes);
   Status status;
-  const bool ok = r.u32(&status.lastOrders) && getIds(r, &status.inspected);
+  const bool ok =
+      r.u32(&status.lastOrders) && getIds(r, &status.inspected) && r.u32(&status.listLeft);
   return finished(r, ok, std::move(status));
 }
 

@@ -1,12 +1,14 @@
 // The slei3d explorer driven by hand on a perfect vehicle: with its next box reserved, an
 // explorer done with its box goes on to the next one before its station meeting; without one, it
-// looks for a late station along the station's route.
+// looks for a late station along the station's route; before it is done with a box, it flies
+// over it (the roof pass); it comes back for an inspector's results until its list is done.
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
 #include "coinspect/strategies/slei/fleet_plan.h"
+#include "coinspect/strategies/slei/protocol.h"
 #include "coinspect/strategies/slei/slei3d_strategy.h"
 #include "test_boxes.h"
 
@@ -25,6 +27,10 @@ struct Run {
   std::unique_ptr<agent::Strategy> explorer;
   agent::AgentView view;
   double closestToSecondBox = 1e300;  // m, horizontal, over the whole run
+  double highest = 0.0;               // m, over the whole run
+  // m, horizontal, from box 0's footprint corners nearest to and farthest from the start, at
+  // least 1 m above the box.
+  double closestOverNearCorner = 1e300, closestOverFarCorner = 1e300;
 };
 
 Vec3 cornerOf(size_t box) {
@@ -74,8 +80,16 @@ Run fly(const Config& config, int32_t reserved, double until, std::vector<Meetin
     if (step == 10) view.messages.push_back({"gcs", kReplyTopic, encode(reply)});
     const auto command = run.explorer->decide(view);
     if (command.setpoint) view.odometry.position = command.setpoint->position;
-    run.closestToSecondBox = std::min(run.closestToSecondBox,
-                                      (view.odometry.position - kBoxes[1].center).head<2>().norm());
+    const Vec3& at = view.odometry.position;
+    run.closestToSecondBox =
+        std::min(run.closestToSecondBox, (at - kBoxes[1].center).head<2>().norm());
+    run.highest = std::max(run.highest, at.z());
+    if (at.z() > 5.0) {
+      run.closestOverNearCorner =
+          std::min(run.closestOverNearCorner, (at.head<2>() - Eigen::Vector2d(-2, 8)).norm());
+      run.closestOverFarCorner =
+          std::min(run.closestOverFarCorner, (at.head<2>() - Eigen::Vector2d(2, 12)).norm());
+    }
   }
   return run;
 }
@@ -98,6 +112,96 @@ TEST(Slei3dExplorer, TheStationLateItLooksForItAtTheStopBefore) {
   const std::vector<Meeting> before = {{cornerOf(1), 20.0}};
   EXPECT_GT(fly(config, -1, 100.0, before).closestToSecondBox, 30.0);  // at its own place first
   EXPECT_LT(fly(config, -1, 250.0, before).closestToSecondBox, 8.0);   // then at box 1's stop
+}
+
+// Its box swept (here: nothing mapped to sweep), it flies over it from the footprint's corner
+// nearest where it came from to the opposite one, above the space kept blocked over the box
+// while unknown (box top 4 m + 1 m): its LiDAR then sees the roofs from above. Without the roof
+// pass it never rises above its entry height (3 m).
+TEST(Slei3dExplorer, BeforeItsBoxIsDoneItFliesOverItCornerToCorner) {
+  const auto pass = fly(Config::fromText("", "run.ini"), -1, 60.0);
+  EXPECT_GT(pass.highest, 6.0);
+  EXPECT_LT(pass.closestOverNearCorner, 0.5);
+  EXPECT_LT(pass.closestOverFarCorner, 0.5);
+  const auto none = fly(Config::fromText("[slei3d]\nroof_pass = false\n", "run.ini"), -1, 60.0);
+  EXPECT_LT(none.highest, 3.5);
+}
+
+// The sequence numbers of the orders e1 sends i1 (its one inspector, always in sight) while,
+// with no box left, it hands out one feature and then comes to take i1's results. i1 answers
+// every new orders with its status: the feature still on its list, or from orders number
+// `doneFrom` on, inspected and its list done.
+std::vector<uint32_t> ordersToInspector(uint32_t doneFrom, double until) {
+  static agent::StrategyRegistry registry = [] {
+    agent::StrategyRegistry r;
+    registerSlei3d(r);
+    return r;
+  }();
+  const auto config = Config::fromText("", "run.ini");
+  auto explorer = registry.create(
+      "caric-team",
+      agent::StrategyContext{
+          config,
+          "caric-team",
+          "e1",
+          Role::Explorer,
+          1,
+          1,
+          {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}, {"i1", Role::Photographer}},
+          {},
+          0.5});
+  FleetPlan plan;
+  plan.subgroups.push_back({1, {2}, 0, {cornerOf(0), 400.0}, 0});
+  Reply reply;  // at 1 s: no box left, no meeting
+  reply.meetingNumber = 1;
+  reply.box = -1;
+  reply.next = {cornerOf(0), 1e300};
+  agent::AgentView view;
+  view.name = "e1";
+  view.role = Role::Explorer;
+  view.alive = true;
+  view.boxes = &kBoxes;
+  view.odometry.position = Vec3(0, 0, 0.1);
+  agent::NeighbourInfo inspector{"i1", Role::Photographer, {}};
+  inspector.odometry.position = Vec3(-6, 4, 3);
+  std::vector<uint32_t> sent;
+  std::vector<agent::ReceivedMessage> answers;
+  for (int step = 0; step * 0.1 <= until; ++step) {
+    view.time = step * 0.1;
+    view.messages = std::move(answers);
+    answers.clear();
+    view.neighbours = {inspector};
+    view.detectedFeatures.clear();
+    if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
+    if (step == 10) view.messages.push_back({"gcs", kReplyTopic, encode(reply)});
+    if (step == 20) view.detectedFeatures.push_back({7, Vec3(0, 8, 2), -Vec3::UnitY(), 2.0});
+    const auto command = explorer->decide(view);
+    if (command.setpoint) view.odometry.position = command.setpoint->position;
+    for (const auto& message : command.messages) {
+      if (message.to != "i1" || message.topic != kOrdersTopic) continue;
+      const auto orders = decodeOrders(message.bytes);
+      if (!orders || (!sent.empty() && sent.back() == orders->sequence)) continue;
+      sent.push_back(orders->sequence);
+      Status status;
+      status.lastOrders = orders->sequence;
+      const bool done = orders->sequence >= doneFrom;
+      if (done) status.inspected = {7};
+      status.listLeft = done ? 0 : 1;
+      answers.push_back({"i1", kStatusTopic, encode(status), view.time});
+    }
+  }
+  return sent;
+}
+
+// An inspector met for its results while still at its list is met again (its last results
+// stayed with it when the explorer took it for done, and the station let the explorer go with
+// nothing outstanding); once it reports the feature inspected and its list done, it is not.
+TEST(Slei3dExplorer, ItComesBackForTheResultsOfAnInspectorStillAtItsList) {
+  const auto late = ordersToInspector(1000, 120.0);
+  ASSERT_GE(late.size(), 3u);  // the hand-out, then two collections at least
+  EXPECT_EQ(late[2], 3u);
+  // Done by the first collection: the hand-out and that one.
+  EXPECT_EQ(ordersToInspector(2, 120.0), (std::vector<uint32_t>{1, 2}));
 }
 
 }  // namespace

@@ -122,9 +122,11 @@ TEST(SleiProtocol, EveryMessageRoundTrips) {
   orders.waitAt.reset();
   EXPECT_FALSE(decodeOrders(encode(orders))->waitAt);
 
-  const auto status = decodeStatus(encode(Status{7, {1, 5, 9}}));
+  const auto status = decodeStatus(encode(Status{7, {1, 5, 9}, 4}));
   ASSERT_TRUE(status);
+  EXPECT_EQ(status->lastOrders, 7u);
   EXPECT_EQ(status->inspected, (std::vector<uint32_t>{1, 5, 9}));
+  EXPECT_EQ(status->listLeft, 4u);
 }
 
 TEST(SleiProtocol, MalformedMessagesAreRejected) {

@@ -108,6 +108,7 @@ struct Orders {
 struct Status {
   uint32_t lastOrders = 0;  // the sequence of the last orders it took (0: none)
   std::vector<uint32_t> inspected;
+  uint32_t listLeft = 0;  // features still on its list (0: done with it)
 };
 
 std::vector<uint8_t> encode(const FleetPlan& plan);

@@ -92,6 +92,11 @@ struct SleiOptions {
   // m: frontier clusters are cut into cubes of this edge, one viewpoint each (FUEL's split of
   // large frontiers; 0: whole clusters).
   double frontierChunk = 0.0;
+  // Once the box's mapped surface is swept, the explorer flies over the box, between two
+  // opposite corners of its footprint above its top (`[slei3d] roof_pass`): its LiDAR sees the
+  // roofs from above, which it never does from beside the structure, and the sweep goes on over
+  // them. Off: the frontiers alone lead it (they never did above the roofs).
+  bool roofPass = true;
   PlanOptions plan;  // the station's first plan (even split, corners, its speed)
 };
 
@@ -264,8 +269,9 @@ class Slei3dStrategy : public agent::Strategy {
   struct SweepStop {
     Vec3 position = Vec3::Zero();
     Vec3 target = Vec3::Zero();
-    std::vector<uint64_t> keys;
+    std::vector<uint64_t> keys;  // none: a stop of the roof pass (passed once reached)
   };
+  std::vector<Vec3> roofPass_;  // the roof pass's stops still to fly in the box
   std::vector<planning::InspectionPatch> openList_;
   std::vector<SweepStop> sweepRoute_;
   double atStopSince_ = -1.0;  // reached the current stop then (-1: not yet)
@@ -296,6 +302,7 @@ class Slei3dStrategy : public agent::Strategy {
     int missed = 0;              // hand-outs in a row it was not found for
     double lostUntil = 0.0;      // not looked for before this time
     double heard = 0.0;          // its last status
+    uint32_t listLeft = 0;       // features on its list by its last status
   };
   std::vector<InspectorModel> inspectors_;
   // A planned meeting with an inspector (SOEI): where, when, and its orders.
