@@ -37,26 +37,37 @@ Vec3 cornerOf(size_t box) {
   return boxCorner(kBoxes, box, 2.0, 0.0, Vec3(0, 0, 0));
 }
 
-// e1 explores box 0; its meeting with the station (never in range) is at 400 s at box 0's
-// corner; a reply at 1 s (as if met on the way) optionally reserves box 1, and lists the
-// station's stops before that meeting (`before`).
-Run fly(const Config& config, int32_t reserved, double until, std::vector<Meeting> before = {}) {
+// Explorer "e1" (fleet index 1) of `strategy`, with the other units `fleet` names.
+std::unique_ptr<agent::Strategy> makeExplorer(const Config& config, const char* strategy,
+                                              std::vector<agent::FleetMember> fleet) {
   static agent::StrategyRegistry registry = [] {
     agent::StrategyRegistry r;
     registerSlei3d(r);
     return r;
   }();
+  return registry.create(
+      strategy, agent::StrategyContext{
+                    config, strategy, "e1", Role::Explorer, 1, 1, std::move(fleet), {}, 0.5});
+}
+
+// e1 alive on the ground at the origin, seeing the boxes.
+agent::AgentView startView() {
+  agent::AgentView view;
+  view.name = "e1";
+  view.role = Role::Explorer;
+  view.alive = true;
+  view.boxes = &kBoxes;
+  view.odometry.position = Vec3(0, 0, 0.1);
+  return view;
+}
+
+// e1 explores box 0; its meeting with the station (never in range) is at 400 s at box 0's
+// corner; a reply at 1 s (as if met on the way) optionally reserves box 1, and lists the
+// station's stops before that meeting (`before`).
+Run fly(const Config& config, int32_t reserved, double until, std::vector<Meeting> before = {}) {
   Run run;
-  run.explorer = registry.create(
-      "slei3d", agent::StrategyContext{config,
-                                       "slei3d",
-                                       "e1",
-                                       Role::Explorer,
-                                       1,
-                                       1,
-                                       {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}},
-                                       {},
-                                       0.5});
+  run.explorer =
+      makeExplorer(config, "slei3d", {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}});
   const Vec3 corner = cornerOf(0);
   FleetPlan plan;
   plan.subgroups.push_back({1, {}, 0, {corner, 400.0}, 0});
@@ -67,12 +78,8 @@ Run fly(const Config& config, int32_t reserved, double until, std::vector<Meetin
   reply.stops = before;
   reply.stops.push_back(reply.next);
   reply.nextBox = reserved;
+  run.view = startView();
   auto& view = run.view;
-  view.name = "e1";
-  view.role = Role::Explorer;
-  view.alive = true;
-  view.boxes = &kBoxes;
-  view.odometry.position = Vec3(0, 0, 0.1);
   for (int step = 0; step * 0.1 <= until; ++step) {
     view.time = step * 0.1;
     view.messages.clear();
@@ -132,36 +139,16 @@ TEST(Slei3dExplorer, BeforeItsBoxIsDoneItFliesOverItCornerToCorner) {
 // every new orders with its status: the feature still on its list, or from orders number
 // `doneFrom` on, inspected and its list done.
 std::vector<uint32_t> ordersToInspector(uint32_t doneFrom, double until) {
-  static agent::StrategyRegistry registry = [] {
-    agent::StrategyRegistry r;
-    registerSlei3d(r);
-    return r;
-  }();
-  const auto config = Config::fromText("", "run.ini");
-  auto explorer = registry.create(
-      "caric-team",
-      agent::StrategyContext{
-          config,
-          "caric-team",
-          "e1",
-          Role::Explorer,
-          1,
-          1,
-          {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}, {"i1", Role::Photographer}},
-          {},
-          0.5});
+  auto explorer = makeExplorer(
+      Config::fromText("", "run.ini"), "caric-team",
+      {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}, {"i1", Role::Photographer}});
   FleetPlan plan;
   plan.subgroups.push_back({1, {2}, 0, {cornerOf(0), 400.0}, 0});
   Reply reply;  // at 1 s: no box left, no meeting
   reply.meetingNumber = 1;
   reply.box = -1;
   reply.next = {cornerOf(0), 1e300};
-  agent::AgentView view;
-  view.name = "e1";
-  view.role = Role::Explorer;
-  view.alive = true;
-  view.boxes = &kBoxes;
-  view.odometry.position = Vec3(0, 0, 0.1);
+  agent::AgentView view = startView();
   agent::NeighbourInfo inspector{"i1", Role::Photographer, {}};
   inspector.odometry.position = Vec3(-6, 4, 3);
   std::vector<uint32_t> sent;
