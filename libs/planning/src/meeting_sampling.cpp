@@ -89,6 +89,10 @@ void validateMeetingSampling(const MeetingSamplingOptions& options) {
     throw InputError(source, "minSeparation",
                      std::to_string(options.minSeparation) + " is negative");
   }
+  if (!(options.partnerRadius >= 0.0)) {
+    throw InputError(source, "partnerRadius",
+                     std::to_string(options.partnerRadius) + " is negative");
+  }
   if (options.maxSamples < 1) {
     throw InputError(source, "maxSamples", std::to_string(options.maxSamples) + " is below 1");
   }
@@ -113,7 +117,8 @@ std::vector<Vec3> sampleMeetingPoints(const Vec3& pose, const MeetingBox& box,
         if (distance > reach + slack || distance < options.minSeparation - slack) continue;
         const Vec3 node = pose + offset;
         if (!box.contains(node)) continue;
-        if (!space.isFree(node) || !space.lineOfSight(node, pose)) continue;
+        const Vec3 seen = pose + offset * std::min(1.0, options.partnerRadius / distance);
+        if (!space.isFree(node) || !space.lineOfSight(node, seen)) continue;
         kept.push_back(node);
       }
     }

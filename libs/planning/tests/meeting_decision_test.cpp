@@ -178,6 +178,28 @@ TEST(MeetingSampling, VoxelGridSpaceBlocksOccupiedUnknownAndOutside) {
   EXPECT_FALSE(clearSight.lineOfSight(pose, Vec3(5.7, 5.1, 5.1)));
 }
 
+TEST(MeetingSampling, ThePartnersOwnBodyInTheMapBlocksNoSightLine) {
+  // The partner hovers 0.9 m off the wall; the map holds its body as occupied cells (a UAV out
+  // of link range is not filtered from scans).
+  VoxelGrid grid = walledGrid();
+  const Vec3 pose(5.1, 5.1, 5.1);
+  for (int z = 24; z <= 26; ++z)
+    for (int y = 24; y <= 26; ++y)
+      for (int x = 24; x <= 26; ++x)
+        grid.set(Index3(x, y, z), CellState::Occupied);
+  const MeetingSpace space = voxelGridMeetingSpace(grid, 0.0);
+  MeetingSamplingOptions options;
+  EXPECT_TRUE(sampleMeetingPoints(pose, bigBox(), space, options).empty());  // sight ends in it
+  options.partnerRadius = 0.8;  // past the body, short of the wall
+  const std::vector<Vec3> samples = sampleMeetingPoints(pose, bigBox(), space, options);
+  EXPECT_GT(samples.size(), 100u);
+  for (const Vec3& sample : samples)
+    EXPECT_LT(sample.x(), 6.0);  // none seen through the wall
+  options.partnerRadius = -0.1;
+  EXPECT_MENTIONS(testing::messageOf([&] { sampleMeetingPoints(pose, bigBox(), space, options); }),
+                  "partnerRadius");
+}
+
 // ---------------------------------------------------------------------------------------------
 // OptMeet
 

@@ -1,5 +1,5 @@
 // The slei3d ground station driven by hand: the unknown workspace's slabs and octree parts, the
-// reserved next box.
+// reserved next box (and the last free box kept for an explorer without one).
 #include <gtest/gtest.h>
 
 #include <optional>
@@ -172,8 +172,9 @@ const std::vector<agent::BoxView> kRow = {
     makeBox(Vec3(100, 0, 5), Vec3(10, 10, 10)), makeBox(Vec3(120, 0, 5), Vec3(10, 10, 10))};
 
 std::optional<Reply> replyTo(agent::Strategy& station, const std::string& explorer, double time,
-                             const Report& report) {
-  auto view = stationView(time, {{explorer, kReportTopic, encode(report)}}, &kRow);
+                             const Report& report,
+                             const std::vector<agent::BoxView>* boxes = &kRow) {
+  auto view = stationView(time, {{explorer, kReportTopic, encode(report)}}, boxes);
   view.odometry.position = Vec3(0, -15, 0.1);
   return sent<Reply>(station.decide(view), explorer, kReplyTopic, decodeReply);
 }
@@ -224,6 +225,34 @@ TEST(Slei3dStation, EachReplyReservesTheSubgroupsNextBox) {
   ASSERT_TRUE(fixed);
   EXPECT_GE(fixed->nextBox, 2);
   EXPECT_EQ(replyTo(*pre, "e1", 120.0, reportOf(0, true, 2))->box, fixed->nextBox);
+}
+
+TEST(Slei3dStation, TheLastFreeBoxIsNotReservedWhileAnotherExplorerHasNone) {
+  agent::StrategyRegistry registry;
+  registerSlei3d(registry);
+  const auto config = Config::fromText("", "run.ini");
+  const std::vector<agent::BoxView> three(kRow.begin(), kRow.begin() + 3);  // A, B, C
+  for (const bool finishedFirst : {false, true}) {
+    auto station = registry.create("slei3d", stationContext(config));
+    auto first = stationView(0.0, {}, &three);
+    first.odometry.position = Vec3(0, -15, 0.1);
+    station->decide(first);  // e1 takes A, e2 B; C is free
+    if (finishedFirst) {
+      // e2 done with B asks first: C is its box; nothing is left to reserve for e1.
+      EXPECT_EQ(replyTo(*station, "e2", 50.0, reportOf(1, true, 1), &three)->box, 2);
+      EXPECT_EQ(replyTo(*station, "e1", 60.0, reportOf(0, false, 1), &three)->nextBox, -1);
+      continue;
+    }
+    // e1 at work in A: C stays free, e2 (at work in B, nothing reserved) will ask for it ...
+    const auto toE1 = replyTo(*station, "e1", 60.0, reportOf(0, false, 1), &three);
+    ASSERT_TRUE(toE1);
+    EXPECT_EQ(toE1->box, 0);
+    EXPECT_EQ(toE1->nextBox, -1);
+    // ... and gets it when done with B.
+    const auto toE2 = replyTo(*station, "e2", 70.0, reportOf(1, true, 1), &three);
+    ASSERT_TRUE(toE2);
+    EXPECT_EQ(toE2->box, 2);
+  }
 }
 
 TEST(Slei3dStation, BadWorkspaceAndSearchKeysAreErrors) {

@@ -51,6 +51,11 @@ struct MeetingSamplingOptions {
   // m; samples closer than this to the pose are dropped, so that the explorer does not fly into
   // the hovering inspector (not in the reference, which would even use the pose itself)
   double minSeparation = 1.0;
+  // m around the pose that only the partner itself can fill: the line of sight is checked from a
+  // node to the point this far from the pose towards it. A robot's map shows a UAV it has no link
+  // with as an obstacle (its scan points are dropped only for neighbours), so an inspector
+  // hovering at its pose blocked every sight line to it (0: to the pose itself, the reference).
+  double partnerRadius = 0.0;
   double step = 0.4;      // m, grid spacing (the reference's 0.2 m voxels / density 0.5)
   int maxSamples = 1000;  // per pose; more are thinned uniformly by index
 };
@@ -61,9 +66,9 @@ void validateMeetingSampling(const MeetingSamplingOptions& options);
 
 // The grid nodes pose + step (i, j, k), scanned with x slowest and z fastest, kept when
 // minSeparation <= |offset| <= range - margin, box.contains(node), space.isFree(node) and
-// space.lineOfSight(node, pose); then, when more than maxSamples remain, the ones at indices
-// floor(i n / maxSamples) for i = 0 .. maxSamples - 1. Deterministic; the queries are asked in
-// that order, cheapest filters first.
+// space.lineOfSight(node, pose + offset * min(1, partnerRadius / |offset|)); then, when more than
+// maxSamples remain, the ones at indices floor(i n / maxSamples) for i = 0 .. maxSamples - 1.
+// Deterministic; the queries are asked in that order, cheapest filters first.
 std::vector<Vec3> sampleMeetingPoints(const Vec3& pose, const MeetingBox& box,
                                       const MeetingSpace& space,
                                       const MeetingSamplingOptions& options);

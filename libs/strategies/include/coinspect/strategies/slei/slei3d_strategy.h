@@ -87,7 +87,8 @@ struct SleiOptions {
   // Each reply also reserves the subgroup's next box (the one the rolling assignment or its
   // fixed order would give it next), so that an explorer done before its meeting goes on to it
   // instead of waiting for the station (`[slei3d] reserve_next_box`; off: the paper's rule, a
-  // new box only at a meeting).
+  // new box only at a meeting). A rolling box is reserved only while one stays free for each
+  // other explorer at work without a reservation (freeBoxesSpare).
   bool reserveNextBox = true;
   // m: frontier clusters are cut into cubes of this edge, one viewpoint each (FUEL's split of
   // large frontiers; 0: whole clusters).
@@ -147,6 +148,7 @@ class Slei3dStrategy : public agent::Strategy {
   void releaseBox(uint32_t explorer);
   void returnBox(uint32_t explorer, int32_t box);  // to the free boxes or another fixed order
   int32_t takeNextBox(uint32_t explorer, int32_t after);  // the subgroup's next box, now taken
+  bool freeBoxesSpare(uint32_t explorer) const;           // a box may be reserved for it now
   void orphanInspectors(uint32_t explorer);
   size_t subgroupIndex(uint32_t explorer) const;  // of the plan's subgroups (size(): none)
 
