@@ -232,10 +232,10 @@ void Slei3dStrategy::returnBox(uint32_t explorer, int32_t box) {
 }
 
 // Rolling assignment: a free box is reserved for `explorer` only while one stays free for every
-// other explorer that works in a box with none reserved, which will ask for one first. (Reserved
-// at once, the last free box went to the explorer that asked last for it: on slei-a, scene seed 3,
-// explorer2 took the colonnade with the hall, 38 features, still to explore, and explorer1, done
-// with its box at 523 s, had nothing left while explorer2 explored the colonnade until 934 s.)
+// other explorer that works in a box with none reserved, which will ask for one first; reserved
+// at once, the last free box went to whichever explorer asked for it last. (On slei-a, scene
+// seeds 1-3, no run changed: there the late imbalance comes from reservations made while each
+// explorer still had one of its own.)
 bool Slei3dStrategy::freeBoxesSpare(uint32_t explorer) const {
   const auto free = static_cast<size_t>(std::count(boxTaken_.begin(), boxTaken_.end(), uint8_t{0}));
   size_t asking = 0;

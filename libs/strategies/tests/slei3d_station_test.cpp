@@ -232,27 +232,27 @@ TEST(Slei3dStation, TheLastFreeBoxIsNotReservedWhileAnotherExplorerHasNone) {
   registerSlei3d(registry);
   const auto config = Config::fromText("", "run.ini");
   const std::vector<agent::BoxView> three(kRow.begin(), kRow.begin() + 3);  // A, B, C
-  for (const bool finishedFirst : {false, true}) {
+  const auto planned = [&] {  // e1 takes A, e2 B; C is free
     auto station = registry.create("slei3d", stationContext(config));
     auto first = stationView(0.0, {}, &three);
     first.odometry.position = Vec3(0, -15, 0.1);
-    station->decide(first);  // e1 takes A, e2 B; C is free
-    if (finishedFirst) {
-      // e2 done with B asks first: C is its box; nothing is left to reserve for e1.
-      EXPECT_EQ(replyTo(*station, "e2", 50.0, reportOf(1, true, 1), &three)->box, 2);
-      EXPECT_EQ(replyTo(*station, "e1", 60.0, reportOf(0, false, 1), &three)->nextBox, -1);
-      continue;
-    }
-    // e1 at work in A: C stays free, e2 (at work in B, nothing reserved) will ask for it ...
-    const auto toE1 = replyTo(*station, "e1", 60.0, reportOf(0, false, 1), &three);
-    ASSERT_TRUE(toE1);
-    EXPECT_EQ(toE1->box, 0);
-    EXPECT_EQ(toE1->nextBox, -1);
-    // ... and gets it when done with B.
-    const auto toE2 = replyTo(*station, "e2", 70.0, reportOf(1, true, 1), &three);
-    ASSERT_TRUE(toE2);
-    EXPECT_EQ(toE2->box, 2);
-  }
+    station->decide(first);
+    return station;
+  };
+  // e1 at work in A: C stays free, e2 (at work in B, nothing reserved) will ask for it ...
+  auto station = planned();
+  const auto toE1 = replyTo(*station, "e1", 60.0, reportOf(0, false, 1), &three);
+  ASSERT_TRUE(toE1);
+  EXPECT_EQ(toE1->box, 0);
+  EXPECT_EQ(toE1->nextBox, -1);
+  // ... and gets it when done with B.
+  const auto toE2 = replyTo(*station, "e2", 70.0, reportOf(1, true, 1), &three);
+  ASSERT_TRUE(toE2);
+  EXPECT_EQ(toE2->box, 2);
+  // e2 done with B asks first: C is its box; nothing is left to reserve for e1.
+  auto other = planned();
+  EXPECT_EQ(replyTo(*other, "e2", 50.0, reportOf(1, true, 1), &three)->box, 2);
+  EXPECT_EQ(replyTo(*other, "e1", 60.0, reportOf(0, false, 1), &three)->nextBox, -1);
 }
 
 TEST(Slei3dStation, BadWorkspaceAndSearchKeysAreErrors) {
