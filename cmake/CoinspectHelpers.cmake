@@ -4,8 +4,10 @@
 add_library(coinspect_build_flags INTERFACE)
 target_compile_options(coinspect_build_flags INTERFACE -Wall -Wextra -Wpedantic)
 if(COINSPECT_SANITIZE)
+  # -O1 -g1 (line tables only) after the build type's flags: ASan's recommended level, and
+  # compiling is the sanitizer build's largest cost in CI (doc/benchmarks.md, "CI time").
   target_compile_options(coinspect_build_flags INTERFACE
-    -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+    -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined -O1 -g1)
   target_link_options(coinspect_build_flags INTERFACE -fsanitize=address,undefined)
 endif()
 
