@@ -145,9 +145,11 @@ std::vector<planning::InspectionPatch> Slei3dStrategy::unsweptPatches(
 }
 
 std::vector<agent::BoxView> Slei3dStrategy::remainderParts() const {
-  if (!options_.unknownWorkspace || fixedRegions() || box_ < 0) return {};
+  if (!(options_.unknownWorkspace || options_.shareWork) || fixedRegions() || box_ < 0) return {};
   std::vector<agent::BoxView> out;
-  for (const auto& part : octreeChildren(boxes_[static_cast<size_t>(box_)], options_.leafEdge)) {
+  // A known box is split across its footprint only: each part keeps its roof.
+  for (const auto& part : octreeChildren(boxes_[static_cast<size_t>(box_)], options_.leafEdge,
+                                         options_.unknownWorkspace)) {
     bool open = !unsweptPatches(part).empty();
     if (!open) {
       const auto bounds = runtime::boxBounds(part);
@@ -729,11 +731,15 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
     lastReply_ = {here, view.time};
     earlyPlace_.reset();
     earlyTried_ = false;
-    if (reply->boxShape && reply->box >= 0) {  // a part the station made of a box
-      const auto index = static_cast<size_t>(reply->box);
+    // Parts the station made of a box.
+    const auto learnPart = [&](int32_t box, const std::optional<agent::BoxView>& shape) {
+      if (!shape || box < 0) return;
+      const auto index = static_cast<size_t>(box);
       if (boxes_.size() <= index) boxes_.resize(index + 1);
-      boxes_[index] = *reply->boxShape;
-    }
+      boxes_[index] = *shape;
+    };
+    learnPart(reply->box, reply->boxShape);
+    learnPart(reply->nextBox, reply->nextBoxShape);
     if (reply->box != box_) {
       enterBox(view, reply->box);
     } else {

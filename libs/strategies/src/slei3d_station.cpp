@@ -21,6 +21,7 @@ constexpr double kBlockAhead = 0.8, kBlockRadius = 0.7;  // m: the ground it the
 constexpr double kRechargeLevel = 0.2;  // battery level an explorer must be back by (the paper)
 constexpr double kChargeSettle = 5.0;   // s for an explorer to get above the charger
 constexpr double kLargerBox = 1.01;     // a box this much larger than a free one is split
+constexpr double kBesideMeeting = 2.5;  // m between two explorers' places at one meeting
 
 }  // namespace
 
@@ -61,6 +62,11 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
       send(command, explorer, kReplyTopic, encode(previous->second));  // a lost reply: again
       continue;
     }
+    // Waiting for a share of another's box, it is answered at its meeting's time: the one at
+    // work, met there just before, may have left it a part.
+    if (awaitingWork_.count(explorer) && report->box < 0 && previous != answered_.end() &&
+        view.time < previous->second.next.time)
+      continue;
     Reply reply;
     reply.meetingNumber = report->meetingNumber;
     // Presumed lost, it turns up again: its inspectors went to others, and it starts afresh.
@@ -83,9 +89,21 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
         if (!boxTaken_[b]) largest = std::max(largest, boxes_[b].size.prod());
       return largest;
     };
-    if (options_.unknownWorkspace && !fixedRegions() && known && !report->boxFinished &&
-        !report->remainder.empty() &&
-        boxes_[static_cast<size_t>(report->box)].size.prod() > kLargerBox * largestFree()) {
+    // Work sharing: another explorer waits for a share of this one's work. The box reserved
+    // for this one, not started, goes back to the free ones (the waiting one takes it at its
+    // meeting); with none reserved and none free, the box is split (below).
+    const bool othersWait =
+        sharingWork() && known && !report->boxFinished && !movedOn && othersAwaitWork(explorer);
+    if (othersWait && reservation != reserved_.end()) {
+      returnBox(explorer, reservation->second);
+      reserved_.erase(reservation);
+    }
+    const bool share = othersWait && report->remainder.size() > 1 &&
+                       std::count(boxTaken_.begin(), boxTaken_.end(), uint8_t{0}) == 0;
+    if (((options_.unknownWorkspace && !fixedRegions() && !report->remainder.empty() &&
+          boxes_[static_cast<size_t>(report->box)].size.prod() > kLargerBox * largestFree()) ||
+         share) &&
+        known && !report->boxFinished) {
       // The paper's octree partition of what is left, for a box larger than every free one (so
       // the next subgroup done with its own finds one; the work stays in boxes of about one
       // size): the box's parts with work join the free boxes (the box itself stays taken: its
@@ -116,7 +134,22 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
         reply.box = takeNextBox(explorer, report->box);
       }
       if (reply.box >= 0) lead = kNewBoxLead;
+    } else if (report->box < 0 && awaitingWork_.count(explorer)) {
+      reply.box = nearestFreeBox(boxes_, boxTaken_, here);  // a share left by one at work
+      if (reply.box >= 0) {
+        boxTaken_[static_cast<size_t>(reply.box)] = 1;
+        lead = kNewBoxLead;
+      }
     }
+    // Left without a box while others explore: it waits for a share at the next meeting of one
+    // at work (an explorer whose battery limits it charges and comes back instead: not here).
+    const StationMeeting* atWork = nextMeetingAtWork(explorer);
+    const bool awaiting =
+        reply.box < 0 && sharingWork() && atWork && !unit_.fleet[explorer].battery.limited();
+    if (awaiting)
+      awaitingWork_.insert(explorer);
+    else
+      awaitingWork_.erase(explorer);
     // The box after it, reserved now: an explorer done before its next meeting goes on to it
     // rather than wait for the station, which cannot know it is done (slei-a: explorers done
     // with a small box waited up to 480 s for a meeting eq. 9 had put 600 s ahead).
@@ -127,9 +160,19 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
     }
     const auto reservedNow = reserved_.find(explorer);
     reply.nextBox = reservedNow != reserved_.end() ? reservedNow->second : -1;
-    if (options_.unknownWorkspace && reply.box >= 0)
-      reply.boxShape = boxes_[static_cast<size_t>(reply.box)];
-    if (report->boxFinished && report->box < 0 && report->remaining <= 0.0) {
+    reply.boxShape = partShape(reply.box);
+    reply.nextBoxShape = partShape(reply.nextBox);
+    if (awaiting) {
+      // Just after that meeting and beside it, away from that one's box: the two do not hover
+      // at one point, and both are within a link of the station there.
+      Vec3 away =
+          atWork->meeting.place - boxes_[static_cast<size_t>(boxOf(atWork->explorer))].center;
+      away.z() = 0.0;
+      away = away.norm() > 1e-6 ? away.normalized() : Vec3::UnitX();
+      reply.next = {atWork->meeting.place + kBesideMeeting * away,
+                    std::max(atWork->meeting.time, view.time) + options_.meetingGrace};
+    } else if (reply.box < 0 && report->boxFinished && report->box < 0 &&
+               report->remaining <= 0.0) {
       reply.next = {here, kNoMeeting};  // nothing left for this subgroup
     } else {
       // The corner nearest the station (the reference's rule). The paper's, the corner whose
@@ -204,6 +247,7 @@ void Slei3dStrategy::orphanInspectors(uint32_t explorer) {
     orphans_.push_back({m.inspector, m.place});
   members_.erase(members);
   lost_.insert(explorer);
+  awaitingWork_.erase(explorer);
 }
 
 // A lost explorer's box and the one reserved for it go back. It may have finished the first
@@ -241,10 +285,38 @@ bool Slei3dStrategy::freeBoxesSpare(uint32_t explorer) const {
   size_t asking = 0;
   for (const auto& s : plan_->subgroups) {
     if (s.explorer == explorer || lost_.count(s.explorer) || reserved_.count(s.explorer)) continue;
-    const auto answered = answered_.find(s.explorer);
-    if ((answered != answered_.end() ? answered->second.box : s.box) >= 0) ++asking;
+    if (boxOf(s.explorer) >= 0 || awaitingWork_.count(s.explorer)) ++asking;
   }
   return free > asking;
+}
+
+int32_t Slei3dStrategy::boxOf(uint32_t explorer) const {
+  const auto answered = answered_.find(explorer);
+  if (answered != answered_.end()) return answered->second.box;
+  const size_t index = subgroupIndex(explorer);
+  return index < plan_->subgroups.size() ? plan_->subgroups[index].box : -1;
+}
+
+bool Slei3dStrategy::othersAwaitWork(uint32_t explorer) const {
+  return std::any_of(awaitingWork_.begin(), awaitingWork_.end(),
+                     [&](uint32_t other) { return other != explorer && !lost_.count(other); });
+}
+
+const Slei3dStrategy::StationMeeting* Slei3dStrategy::nextMeetingAtWork(uint32_t explorer) const {
+  const StationMeeting* earliest = nullptr;
+  for (const auto& m : schedule_) {
+    if (m.explorer == explorer || awaitingWork_.count(m.explorer) || lost_.count(m.explorer))
+      continue;
+    if (boxOf(m.explorer) < 0) continue;
+    if (!earliest || m.meeting.time < earliest->meeting.time) earliest = &m;
+  }
+  return earliest;
+}
+
+std::optional<agent::BoxView> Slei3dStrategy::partShape(int32_t box) const {
+  if (box < 0 || (!options_.unknownWorkspace && static_cast<size_t>(box) < sceneBoxes_))
+    return std::nullopt;
+  return boxes_[static_cast<size_t>(box)];
 }
 
 int32_t Slei3dStrategy::takeNextBox(uint32_t explorer, int32_t after) {

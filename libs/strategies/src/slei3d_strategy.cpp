@@ -52,6 +52,7 @@ void Slei3dStrategy::initialise(const agent::AgentView& view) {
     for (auto& box : boxes_)
       box.highPriority = false;
   boxTaken_.assign(boxes_.size(), 0);
+  sceneBoxes_ = boxes_.size();
   // Frames travel between robots (meetings are short, so a reply carries many).
   coinspect_strategy::RelayOptions relay;
   relay.digestPeriod = 1.0;
@@ -269,6 +270,7 @@ SleiOptions readOptions(const Config& config) {
   o.fixInterval = number("fix_interval", o.fixInterval, 10.0, 3600.0);
   o.plan.evenSplit = config.getBool("slei3d", "even_split", o.plan.evenSplit);
   o.reserveNextBox = config.getBool("slei3d", "reserve_next_box", o.reserveNextBox);
+  o.shareWork = config.getBool("slei3d", "share_work", o.shareWork);
   o.frontierChunk = number("frontier_chunk", o.frontierChunk, 0.0, 100.0);
   if (o.frontierChunk > 0.0 && o.frontierChunk < 1.0)
     throw InputError(config.source(), "[slei3d] frontier_chunk",

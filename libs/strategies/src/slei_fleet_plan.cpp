@@ -105,11 +105,12 @@ std::vector<agent::BoxView> splitWorkspace(const agent::BoxView& workspace, size
   return out;
 }
 
-std::vector<agent::BoxView> octreeChildren(const agent::BoxView& box, double maxEdge) {
+std::vector<agent::BoxView> octreeChildren(const agent::BoxView& box, double maxEdge,
+                                           bool splitHeight) {
   const auto bounds = runtime::boxBounds(box);
   const Vec3 size = bounds.max - bounds.min;
   Eigen::Vector3i halves = Eigen::Vector3i::Ones();
-  for (int a = 0; a < 3; ++a)
+  for (int a = 0; a < (splitHeight ? 3 : 2); ++a)
     if (size[a] > maxEdge) halves[a] = 2;
   if (halves.prod() == 1) return {};
   std::vector<agent::BoxView> out;

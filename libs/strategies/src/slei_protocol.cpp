@@ -141,6 +141,8 @@ std::vector<uint8_t> encode(const Reply& reply) {
   w.u8(reply.boxShape ? 1 : 0);
   if (reply.boxShape) put(w, *reply.boxShape);
   w.i32(reply.nextBox);
+  w.u8(reply.nextBoxShape ? 1 : 0);
+  if (reply.nextBoxShape) put(w, *reply.nextBoxShape);
   return w.take();
 }
 
@@ -166,7 +168,12 @@ std::optional<Reply> decodeReply(const std::vector<uint8_t>& bytes) {
     ok = get(r, &shape);
     reply.boxShape = shape;
   }
-  ok = ok && r.i32(&reply.nextBox) && reply.nextBox >= -1;
+  ok = ok && r.i32(&reply.nextBox) && reply.nextBox >= -1 && r.u8(&shaped) && shaped <= 1;
+  if (ok && shaped) {
+    agent::BoxView shape;
+    ok = get(r, &shape);
+    reply.nextBoxShape = shape;
+  }
   return finished(r, ok, std::move(reply));
 }
 

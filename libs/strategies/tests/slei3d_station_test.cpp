@@ -1,7 +1,9 @@
 // The slei3d ground station driven by hand: the unknown workspace's slabs and octree parts, the
-// reserved next box (and the last free box kept for an explorer without one).
+// reserved next box (and the last free box kept for an explorer without one), work shared with
+// an explorer left without a box.
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -188,14 +190,29 @@ Report reportOf(int32_t box, bool finished, uint32_t meetingNumber) {
   return report;
 }
 
-TEST(Slei3dStation, EachReplyReservesTheSubgroupsNextBox) {
+// An explorer without a box whose inspectors have nothing left.
+Report boxlessReport(uint32_t meetingNumber) {
+  Report report = reportOf(-1, true, meetingNumber);
+  report.remaining = 0.0;
+  return report;
+}
+
+// A `method` station at (0, -15) after its first decision, the plan over `boxes`: e1 takes A
+// (nearest the station), e2 then B.
+std::unique_ptr<agent::Strategy> plannedStation(const std::string& configText,
+                                                const std::vector<agent::BoxView>* boxes = &kRow,
+                                                const std::string& method = "slei3d") {
   agent::StrategyRegistry registry;
   registerSlei3d(registry);
-  const auto config = Config::fromText("", "run.ini");
-  auto station = registry.create("slei3d", stationContext(config));
-  auto first = stationView(0.0, {}, &kRow);
+  auto station = registry.create(method, stationContext(Config::fromText(configText, "run.ini")));
+  auto first = stationView(0.0, {}, boxes);
   first.odometry.position = Vec3(0, -15, 0.1);
-  station->decide(first);  // the plan: e1 takes A (nearest the station), e2 then B
+  station->decide(first);
+  return station;
+}
+
+TEST(Slei3dStation, EachReplyReservesTheSubgroupsNextBox) {
+  auto station = plannedStation("");
   // e1 reports A not done: it keeps A, and C (the free box nearest A) is reserved for it.
   const auto toE1 = replyTo(*station, "e1", 60.0, reportOf(0, false, 1));
   ASSERT_TRUE(toE1);
@@ -213,14 +230,11 @@ TEST(Slei3dStation, EachReplyReservesTheSubgroupsNextBox) {
   EXPECT_EQ(again->nextBox, -1);
 
   // The paper's rule (off): no reservation, and e2 done with B gets C, the free box nearest B.
-  const auto off = Config::fromText("[slei3d]\nreserve_next_box = false\n", "run.ini");
-  auto plain = registry.create("slei3d", stationContext(off));
-  plain->decide(first);
+  auto plain = plannedStation("[slei3d]\nreserve_next_box = false\n");
   EXPECT_EQ(replyTo(*plain, "e1", 60.0, reportOf(0, false, 1))->nextBox, -1);
   EXPECT_EQ(replyTo(*plain, "e2", 70.0, reportOf(1, true, 1))->box, 2);
   // slei-pre's fixed orders: the next box of its own list (e1: A, then C).
-  auto pre = registry.create("slei-pre", stationContext(config));
-  pre->decide(first);
+  auto pre = plannedStation("", &kRow, "slei-pre");
   const auto fixed = replyTo(*pre, "e1", 60.0, reportOf(0, false, 1));
   ASSERT_TRUE(fixed);
   EXPECT_GE(fixed->nextBox, 2);
@@ -228,19 +242,9 @@ TEST(Slei3dStation, EachReplyReservesTheSubgroupsNextBox) {
 }
 
 TEST(Slei3dStation, TheLastFreeBoxIsNotReservedWhileAnotherExplorerHasNone) {
-  agent::StrategyRegistry registry;
-  registerSlei3d(registry);
-  const auto config = Config::fromText("", "run.ini");
-  const std::vector<agent::BoxView> three(kRow.begin(), kRow.begin() + 3);  // A, B, C
-  const auto planned = [&] {  // e1 takes A, e2 B; C is free
-    auto station = registry.create("slei3d", stationContext(config));
-    auto first = stationView(0.0, {}, &three);
-    first.odometry.position = Vec3(0, -15, 0.1);
-    station->decide(first);
-    return station;
-  };
+  const std::vector<agent::BoxView> three(kRow.begin(), kRow.begin() + 3);  // A, B, C: C free
   // e1 at work in A: C stays free, e2 (at work in B, nothing reserved) will ask for it ...
-  auto station = planned();
+  auto station = plannedStation("", &three);
   const auto toE1 = replyTo(*station, "e1", 60.0, reportOf(0, false, 1), &three);
   ASSERT_TRUE(toE1);
   EXPECT_EQ(toE1->box, 0);
@@ -250,9 +254,70 @@ TEST(Slei3dStation, TheLastFreeBoxIsNotReservedWhileAnotherExplorerHasNone) {
   ASSERT_TRUE(toE2);
   EXPECT_EQ(toE2->box, 2);
   // e2 done with B asks first: C is its box; nothing is left to reserve for e1.
-  auto other = planned();
+  auto other = plannedStation("", &three);
   EXPECT_EQ(replyTo(*other, "e2", 50.0, reportOf(1, true, 1), &three)->box, 2);
   EXPECT_EQ(replyTo(*other, "e1", 60.0, reportOf(0, false, 1), &three)->nextBox, -1);
+}
+
+TEST(Slei3dStation, AnExplorerWithoutABoxGetsTheReservedBoxOfOneAtWork) {
+  auto station = plannedStation("");
+  const auto toE1 = replyTo(*station, "e1", 60.0, reportOf(0, false, 1));  // C reserved for e1
+  ASSERT_TRUE(toE1);
+  EXPECT_EQ(toE1->nextBox, 2);
+  EXPECT_EQ(replyTo(*station, "e2", 70.0, reportOf(1, true, 1))->box, 3);  // D
+  // e2 done with D, none free: it is to wait beside e1's next meeting, just after it.
+  const auto waiting = replyTo(*station, "e2", 150.0, reportOf(3, true, 2));
+  ASSERT_TRUE(waiting);
+  EXPECT_EQ(waiting->box, -1);
+  EXPECT_DOUBLE_EQ(waiting->next.time, toE1->next.time + 10.0);
+  EXPECT_NEAR((waiting->next.place - toE1->next.place).norm(), 2.5, 1e-9);
+  // There, before its time, it is not answered; e1, still in A, gives C back ...
+  EXPECT_FALSE(replyTo(*station, "e2", toE1->next.time - 5.0, boxlessReport(3)));
+  const auto kept = replyTo(*station, "e1", toE1->next.time, reportOf(0, false, 2));
+  ASSERT_TRUE(kept);
+  EXPECT_EQ(kept->box, 0);
+  EXPECT_EQ(kept->nextBox, -1);
+  // ... which e2 gets at its time.
+  const auto shared = replyTo(*station, "e2", waiting->next.time, boxlessReport(3));
+  ASSERT_TRUE(shared);
+  EXPECT_EQ(shared->box, 2);
+  EXPECT_DOUBLE_EQ(shared->next.time, waiting->next.time + 60.0);  // a new box's first meeting
+  EXPECT_FALSE(shared->boxShape);  // a box of the scene: the explorers know it
+}
+
+TEST(Slei3dStation, WithNoBoxFreeTheBoxOfOneAtWorkIsSplitForOneWithout) {
+  const std::vector<agent::BoxView> two(kRow.begin(), kRow.begin() + 2);  // A, B: none free
+  Report atWork = reportOf(0, false, 1);
+  atWork.remainder = octreeChildren(two[0], 4.0, false);  // A's four columns, all with work
+  ASSERT_EQ(atWork.remainder.size(), 4u);
+  auto station = plannedStation("", &two);
+  const auto toE1 = replyTo(*station, "e1", 60.0, atWork, &two);  // no one waits: kept whole
+  ASSERT_TRUE(toE1);
+  EXPECT_EQ(toE1->box, 0);
+  const auto waiting = replyTo(*station, "e2", 70.0, reportOf(1, true, 1), &two);
+  ASSERT_TRUE(waiting);
+  EXPECT_EQ(waiting->box, -1);
+  // At e1's next meeting A is split: e1 goes on with the column nearest the station, a part
+  // whose shape it is sent (the full height of A); e2 gets the next nearest at its time.
+  atWork.meetingNumber = 2;
+  const auto part = replyTo(*station, "e1", toE1->next.time, atWork, &two);
+  ASSERT_TRUE(part && part->boxShape);
+  EXPECT_GE(part->box, 2);
+  EXPECT_TRUE(part->boxShape->size.isApprox(Vec3(5, 5, 10), 1e-9));
+  const auto share = replyTo(*station, "e2", waiting->next.time, boxlessReport(2), &two);
+  ASSERT_TRUE(share && share->boxShape);
+  EXPECT_GE(share->box, 2);
+  EXPECT_NE(share->box, part->box);
+  EXPECT_DOUBLE_EQ(share->next.time, waiting->next.time + 60.0);
+  EXPECT_FALSE(sameBox(*share->boxShape, *part->boxShape));
+
+  // share_work off: e2 is done, and A stays whole.
+  auto alone = plannedStation("[slei3d]\nshare_work = false\n", &two);
+  atWork.meetingNumber = 1;
+  ASSERT_TRUE(replyTo(*alone, "e1", 60.0, atWork, &two));
+  EXPECT_EQ(replyTo(*alone, "e2", 70.0, reportOf(1, true, 1), &two)->box, -1);
+  atWork.meetingNumber = 2;
+  EXPECT_EQ(replyTo(*alone, "e1", toE1->next.time, atWork, &two)->box, 0);
 }
 
 TEST(Slei3dStation, BadWorkspaceAndSearchKeysAreErrors) {
@@ -264,6 +329,7 @@ TEST(Slei3dStation, BadWorkspaceAndSearchKeysAreErrors) {
            {"search_depth = 7", "search_depth"},
            {"search_depth = -1", "search_depth"},
            {"reserve_next_box = 2", "reserve_next_box"},
+           {"share_work = often", "share_work"},
            {"frontier_chunk = 0.5", "frontier_chunk"},
            {"frontier_chunk = -1", "frontier_chunk"}}) {
     const auto config = Config::fromText("[slei3d]\n" + text + "\n", "bad.ini");

@@ -67,10 +67,10 @@ TEST(SleiProtocol, EveryMessageRoundTrips) {
   replyBytes.resize(replyBytes.size() - 4 - 1 - 8 - 1 - 8);  // an adoption cut short
   EXPECT_FALSE(decodeReply(replyBytes));
   replyBytes = encode(makeReply(4, 5, {Vec3(3, 4, 5), 200.0}, {}, {}, false));
-  replyBytes[replyBytes.size() - 14] = 2;  // not a flag
+  replyBytes[replyBytes.size() - 15] = 2;  // not a flag
   EXPECT_FALSE(decodeReply(replyBytes));
   replyBytes = encode(makeReply(4, 5, {Vec3(3, 4, 5), 200.0}, {}, {}, false));
-  replyBytes[replyBytes.size() - 5] = 2;  // not a shape flag
+  replyBytes[replyBytes.size() - 6] = 2;  // not a shape flag
   EXPECT_FALSE(decodeReply(replyBytes));
   // The reserved next box: none by default, a box index, nothing below -1.
   EXPECT_EQ(decodeReply(encode(makeReply(4, 5, {Vec3(3, 4, 5), 200.0})))->nextBox, -1);
@@ -80,7 +80,10 @@ TEST(SleiProtocol, EveryMessageRoundTrips) {
   reserving.nextBox = -2;
   EXPECT_FALSE(decodeReply(encode(reserving)));
   replyBytes = encode(makeReply(4, 5, {Vec3(3, 4, 5), 200.0}));
-  replyBytes.resize(replyBytes.size() - 1);  // the next box cut short
+  replyBytes.resize(replyBytes.size() - 2);  // the next box cut short
+  EXPECT_FALSE(decodeReply(replyBytes));
+  replyBytes = encode(makeReply(4, 5, {Vec3(3, 4, 5), 200.0}));
+  replyBytes.back() = 2;  // not a next-box shape flag
   EXPECT_FALSE(decodeReply(replyBytes));
 
   // The unknown workspace's parts: a report's remainder and a reply's box shape.
@@ -107,6 +110,14 @@ TEST(SleiProtocol, EveryMessageRoundTrips) {
   EXPECT_EQ(decodedShape->boxShape->center, Vec3(1, 2, 3));
   EXPECT_EQ(decodedShape->boxShape->size, Vec3(4, 5, 6));
   EXPECT_FALSE(decodeReply(encode(makeReply(4, 9, {Vec3(3, 4, 5), 200.0})))->boxShape);
+  shaped.nextBox = 10;  // a part reserved next
+  shaped.nextBoxShape = parts.remainder[1];
+  shaped.nextBoxShape->size = Vec3(8, 8, 4);
+  const auto decodedNext = decodeReply(encode(shaped));
+  ASSERT_TRUE(decodedNext && decodedNext->nextBoxShape);
+  EXPECT_EQ(decodedNext->nextBoxShape->center, Vec3(-1, 0, 2));
+  EXPECT_TRUE(decodedNext->nextBoxShape->highPriority);
+  EXPECT_FALSE(decodeReply(encode(makeReply(4, 9, {Vec3(3, 4, 5), 200.0})))->nextBoxShape);
 
   Orders orders;
   orders.sequence = 7;

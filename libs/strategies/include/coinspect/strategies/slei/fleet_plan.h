@@ -34,8 +34,10 @@ agent::BoxView workspaceBox(const std::vector<agent::BoxView>& boxes);
 std::vector<agent::BoxView> splitWorkspace(const agent::BoxView& workspace, size_t parts);
 // One step of the paper's octree partition: the box halved along every edge longer than
 // `maxEdge` (2, 4 or 8 parts, x fastest, then y, then z); none when no edge is longer. The parts
-// keep the box's priority.
-std::vector<agent::BoxView> octreeChildren(const agent::BoxView& box, double maxEdge);
+// keep the box's priority. Without `splitHeight` only the footprint is halved: each part keeps
+// the box's full height (and its roof, for a roof pass over it).
+std::vector<agent::BoxView> octreeChildren(const agent::BoxView& box, double maxEdge,
+                                           bool splitHeight = true);
 
 // SLEI-PRE's fixed box orders (the paper's baseline without rolling assignment): given each
 // subgroup's first box (-1: none), the other boxes are dealt in turns, each subgroup taking the

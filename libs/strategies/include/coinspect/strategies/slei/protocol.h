@@ -88,11 +88,13 @@ struct Reply {
   bool dropInspectors = false;
   // [energy]: when the station's charger is free for it (another explorer may be charging).
   double chargeFrom = 0.0;
-  // The unknown workspace: the shape of `box`, a part the station made (world-aligned).
+  // The shape of `box` when it is a part the station made (world-aligned): the unknown
+  // workspace's, or of a box split to share its work.
   std::optional<agent::BoxView> boxShape;
   // The subgroup's next box, reserved for it (-1: none): it goes on to it when done with `box`
   // before the next meeting, and says so in its report.
   int32_t nextBox = -1;
+  std::optional<agent::BoxView> nextBoxShape;  // as boxShape, of `nextBox`
 };
 
 // An explorer's orders to one of its inspectors: features appended to its list in order, and

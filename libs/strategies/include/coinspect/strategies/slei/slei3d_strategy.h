@@ -90,6 +90,13 @@ struct SleiOptions {
   // new box only at a meeting). A rolling box is reserved only while one stays free for each
   // other explorer at work without a reservation (freeBoxesSpare).
   bool reserveNextBox = true;
+  // Work sharing (`[slei3d] share_work`; not the paper's): an explorer left without a box while
+  // another still explores waits for a share of it at that one's next station meeting; there
+  // the other's reserved box, not yet started, goes back to the free ones, or, none being free,
+  // its box is split across its footprint into the parts still holding work (octreeChildren,
+  // edges above leafEdge), which join the free boxes. Off: an explorer with no free box left is
+  // done (the paper's rolling assignment). Not for the fixed box orders (slei-pre, caric-team).
+  bool shareWork = true;
   // m: frontier clusters are cut into cubes of this edge, one viewpoint each (FUEL's split of
   // large frontiers; 0: whole clusters).
   double frontierChunk = 0.0;
@@ -149,6 +156,14 @@ class Slei3dStrategy : public agent::Strategy {
   void returnBox(uint32_t explorer, int32_t box);  // to the free boxes or another fixed order
   int32_t takeNextBox(uint32_t explorer, int32_t after);  // the subgroup's next box, now taken
   bool freeBoxesSpare(uint32_t explorer) const;           // a box may be reserved for it now
+  int32_t boxOf(uint32_t explorer) const;  // its box as last answered (the plan's first)
+  bool sharingWork() const { return options_.shareWork && !fixedRegions(); }
+  // Work sharing: explorers other than `explorer` waiting for a share of another's box.
+  bool othersAwaitWork(uint32_t explorer) const;
+  // The earliest scheduled meeting of an explorer, not `explorer`, still at work in a box.
+  const StationMeeting* nextMeetingAtWork(uint32_t explorer) const;
+  // The shape to send with `box` when it is a part the explorers do not know.
+  std::optional<agent::BoxView> partShape(int32_t box) const;
   void orphanInspectors(uint32_t explorer);
   size_t subgroupIndex(uint32_t explorer) const;  // of the plan's subgroups (size(): none)
 
@@ -168,8 +183,8 @@ class Slei3dStrategy : public agent::Strategy {
   void enterBox(const agent::AgentView& view, int32_t box);
   // Where it enters a box coming from `from`: the box's corner nearest it, at exploreHeight.
   Vec3 boxEntry(int32_t box, const Vec3& from) const;
-  // The unknown workspace: the octree parts of its box that still hold work (open surface or a
-  // frontier), for its report; none for a leaf.
+  // The unknown workspace (and work sharing, across the footprint only): the octree parts of
+  // its box that still hold work (open surface or a frontier), for its report; none for a leaf.
   std::vector<agent::BoxView> remainderParts() const;
   // The mapped surface patches of `box` (and within 1 m of it) its detector has not swept.
   std::vector<planning::InspectionPatch> unsweptPatches(const agent::BoxView& box) const;
@@ -219,6 +234,8 @@ class Slei3dStrategy : public agent::Strategy {
   std::map<uint32_t, Vec3> enteredFrom_;  // per explorer: where it came to its box from
   std::vector<Adoption> orphans_;         // inspectors of lost explorers, not given yet
   std::set<uint32_t> lost_;               // explorers presumed lost, not heard since
+  std::set<uint32_t> awaitingWork_;       // work sharing: explorers without a box, waiting
+  size_t sceneBoxes_ = 0;                 // boxes before any split (the explorers know them)
   // The meeting it drives to or waits at, and when it got there.
   uint32_t waitingFor_ = ~uint32_t{0};
   double waitingForTime_ = 0.0;
