@@ -45,6 +45,21 @@ bool get(WireReader& r, agent::BoxView* b) {
   b->highPriority = urgent == 1;
   return ok;
 }
+// A flag byte (0 or 1), then the box when 1.
+void put(WireWriter& w, const std::optional<agent::BoxView>& b) {
+  w.u8(b ? 1 : 0);
+  if (b) put(w, *b);
+}
+bool get(WireReader& r, std::optional<agent::BoxView>* b) {
+  uint8_t present = 0;
+  if (!r.u8(&present) || present > 1) return false;
+  b->reset();
+  if (present == 0) return true;
+  agent::BoxView box;
+  if (!get(r, &box)) return false;
+  *b = box;
+  return true;
+}
 
 void putIds(WireWriter& w, const std::vector<uint32_t>& ids) {
   w.u32(static_cast<uint32_t>(ids.size()));
@@ -138,11 +153,9 @@ std::vector<uint8_t> encode(const Reply& reply) {
   }
   w.u8(reply.dropInspectors ? 1 : 0);
   w.f64(reply.chargeFrom);
-  w.u8(reply.boxShape ? 1 : 0);
-  if (reply.boxShape) put(w, *reply.boxShape);
+  put(w, reply.boxShape);
   w.i32(reply.nextBox);
-  w.u8(reply.nextBoxShape ? 1 : 0);
-  if (reply.nextBoxShape) put(w, *reply.nextBoxShape);
+  put(w, reply.nextBoxShape);
   return w.take();
 }
 
@@ -160,20 +173,9 @@ std::optional<Reply> decodeReply(const std::vector<uint8_t>& bytes) {
   for (uint32_t i = 0; ok && i < n; ++i)
     ok = r.u32(&reply.adopt[i].inspector) && r.vec3(&reply.adopt[i].place);
   uint8_t drop = 0;
-  uint8_t shaped = 0;
-  ok = ok && r.u8(&drop) && drop <= 1 && r.f64(&reply.chargeFrom) && r.u8(&shaped) && shaped <= 1;
+  ok = ok && r.u8(&drop) && drop <= 1 && r.f64(&reply.chargeFrom) && get(r, &reply.boxShape);
   reply.dropInspectors = drop == 1;
-  if (ok && shaped) {
-    agent::BoxView shape;
-    ok = get(r, &shape);
-    reply.boxShape = shape;
-  }
-  ok = ok && r.i32(&reply.nextBox) && reply.nextBox >= -1 && r.u8(&shaped) && shaped <= 1;
-  if (ok && shaped) {
-    agent::BoxView shape;
-    ok = get(r, &shape);
-    reply.nextBoxShape = shape;
-  }
+  ok = ok && r.i32(&reply.nextBox) && reply.nextBox >= -1 && get(r, &reply.nextBoxShape);
   return finished(r, ok, std::move(reply));
 }
 
