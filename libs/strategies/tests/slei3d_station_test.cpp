@@ -297,8 +297,8 @@ TEST(Slei3dStation, WithNoBoxFreeTheBoxOfOneAtWorkIsSplitForOneWithout) {
   const auto waiting = replyTo(*station, "e2", 70.0, reportOf(1, true, 1), &two);
   ASSERT_TRUE(waiting);
   EXPECT_EQ(waiting->box, -1);
-  // At e1's next meeting A is split: e1 goes on with the column nearest the station, a part
-  // whose shape it is sent (the full height of A); e2 gets the next nearest at its time.
+  // At e1's next meeting A is split: e1 goes on with one of its columns, a part whose shape it
+  // is sent (the full height of A); e2 gets another at its time.
   atWork.meetingNumber = 2;
   const auto part = replyTo(*station, "e1", toE1->next.time, atWork, &two);
   ASSERT_TRUE(part && part->boxShape);
