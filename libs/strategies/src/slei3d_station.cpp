@@ -98,12 +98,12 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
       returnBox(explorer, reservation->second);
       reserved_.erase(reservation);
     }
-    const bool share = othersWait && report->remainder.size() > 1 &&
-                       std::count(boxTaken_.begin(), boxTaken_.end(), uint8_t{0}) == 0;
-    if (((options_.unknownWorkspace && !fixedRegions() && !report->remainder.empty() &&
-          boxes_[static_cast<size_t>(report->box)].size.prod() > kLargerBox * largestFree()) ||
-         share) &&
-        known && !report->boxFinished) {
+    const bool share = othersWait && report->remainder.size() > 1 && freeBoxCount() == 0;
+    const bool unknownSplit =
+        options_.unknownWorkspace && !fixedRegions() && known && !report->boxFinished &&
+        !report->remainder.empty() &&
+        boxes_[static_cast<size_t>(report->box)].size.prod() > kLargerBox * largestFree();
+    if (unknownSplit || share) {
       // The paper's octree partition of what is left, for a box larger than every free one (so
       // the next subgroup done with its own finds one; the work stays in boxes of about one
       // size): the box's parts with work join the free boxes (the box itself stays taken: its
@@ -281,13 +281,17 @@ void Slei3dStrategy::returnBox(uint32_t explorer, int32_t box) {
 // seeds 1-3, no run changed: there the late imbalance comes from reservations made while each
 // explorer still had one of its own.)
 bool Slei3dStrategy::freeBoxesSpare(uint32_t explorer) const {
-  const auto free = static_cast<size_t>(std::count(boxTaken_.begin(), boxTaken_.end(), uint8_t{0}));
+  const size_t free = freeBoxCount();
   size_t asking = 0;
   for (const auto& s : plan_->subgroups) {
     if (s.explorer == explorer || lost_.count(s.explorer) || reserved_.count(s.explorer)) continue;
     if (boxOf(s.explorer) >= 0 || awaitingWork_.count(s.explorer)) ++asking;
   }
   return free > asking;
+}
+
+size_t Slei3dStrategy::freeBoxCount() const {
+  return static_cast<size_t>(std::count(boxTaken_.begin(), boxTaken_.end(), uint8_t{0}));
 }
 
 int32_t Slei3dStrategy::boxOf(uint32_t explorer) const {

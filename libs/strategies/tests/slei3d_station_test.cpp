@@ -149,6 +149,27 @@ TEST(Slei3dStation, TheUnknownWorkspaceGivesSlabsThenThePartsLeftOfABox) {
   EXPECT_LT(split->boxShape->size.maxCoeff(), 5.01);
 }
 
+TEST(Slei3dStation, AReportWithoutABoxButWithPartsSplitsNothing) {
+  // Not what an explorer sends (without a box it reports it finished), but it decodes: the
+  // station must not look the box up.
+  const auto config = Config::fromText("[slei3d]\nworkspace = unknown\n", "run.ini");
+  auto strategy = agent::StrategyRegistry{};
+  registerSlei3d(strategy);
+  auto station = strategy.create("slei3d", stationContext(config));
+  station->decide(stationView(0.0, {}));
+  Report report;
+  report.box = -1;
+  report.remaining = 200.0;
+  report.meetingNumber = 1;
+  report.remainder = octreeChildren(kBoxes[0], 5.0);
+  const auto reply =
+      sent<Reply>(station->decide(stationView(60.0, {{"e1", kReportTopic, encode(report)}})), "e1",
+                  kReplyTopic, decodeReply);
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->box, -1);
+  EXPECT_FALSE(reply->boxShape);
+}
+
 TEST(Slei3dStation, WithTheBoxesKnownAReportedRemainderChangesNothing) {
   const auto config = Config::fromText("", "run.ini");
   auto strategy = agent::StrategyRegistry{};

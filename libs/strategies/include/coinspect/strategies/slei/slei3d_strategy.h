@@ -157,6 +157,7 @@ class Slei3dStrategy : public agent::Strategy {
   int32_t takeNextBox(uint32_t explorer, int32_t after);  // the subgroup's next box, now taken
   bool freeBoxesSpare(uint32_t explorer) const;           // a box may be reserved for it now
   int32_t boxOf(uint32_t explorer) const;  // its box as last answered (the plan's first)
+  size_t freeBoxCount() const;             // boxes no subgroup has taken
   bool sharingWork() const { return options_.shareWork && !fixedRegions(); }
   // Work sharing: explorers other than `explorer` waiting for a share of another's box.
   bool othersAwaitWork(uint32_t explorer) const;
