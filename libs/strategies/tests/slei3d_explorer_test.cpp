@@ -1,9 +1,11 @@
 // The slei3d explorer driven by hand on a perfect vehicle: with its next box reserved, an
 // explorer done with its box goes on to the next one before its station meeting; without one, it
 // looks for a late station along the station's route; before it is done with a box, it flies
-// over it (the roof pass); it comes back for an inspector's results until its list is done.
+// over it (the roof pass); it comes back for an inspector's results until its list is done, and
+// not once it is done, inspected or skipped.
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -136,9 +138,10 @@ TEST(Slei3dExplorer, BeforeItsBoxIsDoneItFliesOverItCornerToCorner) {
 
 // The sequence numbers of the orders e1 sends i1 (its one inspector, always in sight) while,
 // with no box left, it hands out one feature and then comes to take i1's results. i1 answers
-// every new orders with its status: the feature still on its list, or from orders number
-// `doneFrom` on, inspected and its list done.
-std::vector<uint32_t> ordersToInspector(uint32_t doneFrom, double until) {
+// every new orders with its status, and says it again every second (as an inspector does while
+// its explorer is near): the feature still on its list, or from orders number `doneFrom` on,
+// its list done, the feature inspected (or, `skipped`, not).
+std::vector<uint32_t> ordersToInspector(uint32_t doneFrom, double until, bool skipped = false) {
   auto explorer = makeExplorer(
       Config::fromText("", "run.ini"), "caric-team",
       {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}, {"i1", Role::Photographer}});
@@ -153,10 +156,13 @@ std::vector<uint32_t> ordersToInspector(uint32_t doneFrom, double until) {
   inspector.odometry.position = Vec3(-6, 4, 3);
   std::vector<uint32_t> sent;
   std::vector<agent::ReceivedMessage> answers;
+  std::optional<Status> said;
   for (int step = 0; step * 0.1 <= until; ++step) {
     view.time = step * 0.1;
     view.messages = std::move(answers);
     answers.clear();
+    if (said && step % 10 == 0)
+      view.messages.push_back({"i1", kStatusTopic, encode(*said), view.time});
     view.neighbours = {inspector};
     view.detectedFeatures.clear();
     if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
@@ -172,9 +178,10 @@ std::vector<uint32_t> ordersToInspector(uint32_t doneFrom, double until) {
       Status status;
       status.lastOrders = orders->sequence;
       const bool done = orders->sequence >= doneFrom;
-      if (done) status.inspected = {7};
+      if (done && !skipped) status.inspected = {7};
       status.listLeft = done ? 0 : 1;
       answers.push_back({"i1", kStatusTopic, encode(status), view.time});
+      said = status;
     }
   }
   return sent;
@@ -189,6 +196,14 @@ TEST(Slei3dExplorer, ItComesBackForTheResultsOfAnInspectorStillAtItsList) {
   EXPECT_EQ(late[2], 3u);
   // Done by the first collection: the hand-out and that one.
   EXPECT_EQ(ordersToInspector(2, 120.0), (std::vector<uint32_t>{1, 2}));
+}
+
+// An inspector that reports its list done without the feature (it skipped it) is free: e1 does
+// not come back for results it will never have. (Kept on its list, the feature had it busy for
+// good in e1's plans, and caric-team's explorers waited for it to be free before handing out.)
+TEST(Slei3dExplorer, AnInspectorDoneWithItsListIsFreeEvenWithAFeatureSkipped) {
+  EXPECT_EQ(ordersToInspector(1, 120.0), (std::vector<uint32_t>{1}));
+  EXPECT_EQ(ordersToInspector(1, 120.0, true), (std::vector<uint32_t>{1}));
 }
 
 }  // namespace
