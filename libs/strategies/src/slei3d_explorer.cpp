@@ -224,8 +224,9 @@ void Slei3dStrategy::readStatus(const agent::AgentView& view) {
       // Done with every list it was sent: what it did not report inspected it skipped (no way
       // to its poses, or no score there), and its results are on board (the status came over
       // the link). Kept, the skipped features had it busy for good in the plans, and a hand-out
-      // waits for an inspector free soon: caric-team's explorer3 on slei-c, scene seed 1, met
-      // its two idle inspectors at the hub for 2100 s and never handed out 24 features.
+      // waits for an inspector free soon: caric-team's explorer3 on slei-c, scene seed 1, came
+      // back to the hub where its two inspectors waited idle from 786 s on, and never handed
+      // out 24 features.
       if (status->listLeft == 0 && status->lastOrders >= model.sequence) model.tasks.clear();
     }
   }
