@@ -16,8 +16,8 @@
 #include "coinspect/sensing/inspection_scorer.h"
 #include "coinspect/sensing/score_log.h"
 #include "coinspect/world/ray_caster.h"
+#include "coinspect/world/scenario_source.h"
 #include "commands.h"
-#include "scenario_source.h"
 
 namespace coinspect::app {
 
@@ -41,7 +41,7 @@ void runDemo(const DemoOptions& options) {
   using Clock = std::chrono::steady_clock;
   const auto mode = sensing::parseScoringMode(options.mode, "--mode");
   const auto started = Clock::now();
-  const world::Scenario scenario = loadScenarioSource(options.scenario, options.seed);
+  const world::Scenario scenario = world::loadScenarioSource(options.scenario, options.seed);
   const world::RayCaster caster(scenario.meshes, scenario.groundZ);
   const auto loaded = Clock::now();
 

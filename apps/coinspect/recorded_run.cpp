@@ -5,7 +5,7 @@
 
 #include "coinspect/core/error.h"
 #include "coinspect/record/rawlog_reader.h"
-#include "scenario_source.h"
+#include "coinspect/world/scenario_source.h"
 
 namespace coinspect::app {
 
@@ -29,10 +29,10 @@ RecordedRun openRecordedRun(const std::filesystem::path& rawlog,
   const auto config = Config::fromText(run.header.configIni, rawlog.string() + " (run header)");
   run.mission = sim::MissionConfig::read(config, run.header.seed);
   try {
-    run.scenario =
-        scenarioSource.empty()
-            ? sim::loadMissionScenario(run.mission)
-            : loadScenarioSource(scenarioSource, run.mission.scenarioSeed, run.mission.fleet);
+    run.scenario = scenarioSource.empty()
+                       ? sim::loadMissionScenario(run.mission)
+                       : world::loadScenarioSource(scenarioSource, run.mission.scenarioSeed,
+                                                   run.mission.fleet);
   } catch (const InputError& e) {
     if (!scenarioSource.empty()) throw;
     throw InputError(rawlog.string(), "run header [mission] scenario",

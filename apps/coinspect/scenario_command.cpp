@@ -18,8 +18,8 @@
 #include "coinspect/world/mesh_io.h"
 #include "coinspect/world/ray_caster.h"
 #include "coinspect/world/scenario_files.h"
+#include "coinspect/world/scenario_source.h"
 #include "commands.h"
-#include "scenario_source.h"
 
 namespace coinspect::app {
 namespace {
@@ -74,7 +74,7 @@ void runGenerate(const ScenarioOptions& options) {
 }
 
 void runInfo(const ScenarioOptions& options) {
-  const world::Scenario s = loadScenarioSource(options.source, options.seed);
+  const world::Scenario s = world::loadScenarioSource(options.source, options.seed);
   std::printf("name: %s\n", s.name.c_str());
   if (!s.description.empty()) std::printf("description: %s\n", s.description.c_str());
   std::printf("triangles: %zu in %zu meshes\n", s.triangleCount(), s.meshes.size());
@@ -115,7 +115,7 @@ void runExport(const ScenarioOptions& options) {
   if (!options.points.empty() && pointsExtension != ".pcd" && pointsExtension != ".csv")
     throw InputError(options.points, "--points", "unknown point format (use .pcd or .csv)");
 
-  const world::Scenario s = loadScenarioSource(options.source, options.seed);
+  const world::Scenario s = world::loadScenarioSource(options.source, options.seed);
   if (!options.mesh.empty()) {
     world::TriangleMesh all;
     all.name = s.name;
@@ -172,7 +172,7 @@ void runBound(const ScenarioOptions& options) {
   const sensing::ScoringMode mode = sensing::parseScoringMode(options.mode, "--mode");
   eval::ViewBoundOptions bound;
   bound.clearances = parseClearances(options.clearances);
-  const world::Scenario s = loadScenarioSource(options.source, options.seed);
+  const world::Scenario s = world::loadScenarioSource(options.source, options.seed);
   // The first photographer's camera, else the first UAV's (all CARIC cameras are the same).
   auto chosen = std::find_if(s.fleet.begin(), s.fleet.end(), [](const auto& unit) {
     return unit.role == world::UnitRole::Photographer;

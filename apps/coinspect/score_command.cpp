@@ -15,8 +15,8 @@
 #include "coinspect/sensing/inspection_scorer.h"
 #include "coinspect/sensing/score_log.h"
 #include "coinspect/world/ray_caster.h"
+#include "coinspect/world/scenario_source.h"
 #include "commands.h"
-#include "scenario_source.h"
 
 namespace coinspect::app {
 namespace {
@@ -231,7 +231,7 @@ void printCapture(size_t number, const Capture& capture, const world::CameraSpec
 
 void runScore(const ScoreOptions& options) {
   const sensing::ScoringMode mode = sensing::parseScoringMode(options.mode, "--mode");
-  const world::Scenario scenario = loadScenarioSource(options.scenario, options.seed);
+  const world::Scenario scenario = world::loadScenarioSource(options.scenario, options.seed);
   const world::RayCaster caster(scenario.meshes, scenario.groundZ);
   sensing::InspectionScorer scorer(scenario.interestPoints, caster, mode);
 

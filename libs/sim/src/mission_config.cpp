@@ -1,13 +1,13 @@
 #include "coinspect/sim/mission_config.h"
 
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "coinspect/core/error.h"
 #include "coinspect/core/text.h"
-#include "coinspect/world/caric_scenario.h"
 #include "coinspect/world/generators.h"
-#include "coinspect/world/scenario_files.h"
+#include "coinspect/world/scenario_source.h"
 
 namespace coinspect::sim {
 
@@ -147,11 +147,11 @@ MissionConfig MissionConfig::read(const Config& config, std::optional<uint64_t> 
   out.source = config.source();
   const std::string m = "mission";
   const std::string scenario = config.getString(m, "scenario", "");
-  // A relative path is taken from the INI's folder; anything that is not a file or folder there
-  // is a generator name.
-  const std::filesystem::path candidate = config.folder() / scenario;
-  out.scenario =
-      !scenario.empty() && std::filesystem::exists(candidate) ? candidate.string() : scenario;
+  // A generator's name stays a name (world::loadScenarioSource); anything else is a path, taken
+  // from the INI's folder when relative.
+  out.scenario = scenario.empty() || world::isGeneratorName(scenario)
+                     ? scenario
+                     : (config.folder() / scenario).string();
   out.scenarioSeed = nonNegative(config, m, "scenario_seed", config.getInt(m, "scenario_seed", 1));
   if (config.has(m, "fleet")) out.fleet = parseFleet(config, config.getString(m, "fleet"));
   out.seed =
@@ -224,26 +224,20 @@ MissionConfig MissionConfig::read(const Config& config, std::optional<uint64_t> 
 }
 
 world::Scenario loadMissionScenario(const MissionConfig& config) {
-  namespace fs = std::filesystem;
   if (config.scenario.empty())
     throw InputError(config.source, "[mission] scenario", "missing: name a generator or a path");
-  const fs::path path(config.scenario);
-  if (config.fleet && (fs::is_directory(path) || fs::is_regular_file(path)))
-    throw InputError(config.source, "[mission] fleet",
-                     "only for a generated slei-* scenario, not the files of " + config.scenario);
-  if (fs::is_directory(path)) {
-    if (fs::exists(path / "box_description.yaml")) return world::importCaricScenario(path);
-    if (fs::exists(path / "scenario.ini")) return world::loadScenario(path / "scenario.ini");
-    throw InputError(config.source, "[mission] scenario",
-                     path.string() + " holds neither box_description.yaml nor scenario.ini");
-  }
-  if (fs::is_regular_file(path)) return world::loadScenario(path);
-  if (config.fleet)
-    for (const auto& generator : world::scenarioGenerators())
-      if (generator.name == config.scenario && generator.family != "slei")
+  if (config.fleet) {
+    const bool generator = world::isGeneratorName(config.scenario);
+    if (!generator && std::filesystem::exists(config.scenario))
+      throw InputError(config.source, "[mission] fleet",
+                       "only for a generated slei-* scenario, not the files of " + config.scenario);
+    for (const auto& g : world::scenarioGenerators())
+      if (generator && g.name == config.scenario && g.family != "slei")
         throw InputError(config.source, "[mission] fleet",
                          "only for a generated slei-* scenario, not " + config.scenario);
-  return world::generateScenario(config.scenario, config.scenarioSeed, config.fleet);
+  }
+  return world::loadScenarioSource(config.scenario, config.scenarioSeed, config.fleet,
+                                   config.source, "[mission] scenario");
 }
 
 }  // namespace coinspect::sim

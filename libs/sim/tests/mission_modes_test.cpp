@@ -10,7 +10,10 @@
 #include <vector>
 
 #include "coinspect/sim/mission.h"
+#include "coinspect/testing/files.h"
 #include "coinspect/testing/input_errors.h"
+#include "coinspect/testing/paths.h"
+#include "coinspect/world/scenario_files.h"
 #include "sim_scenes.h"
 
 namespace coinspect::sim {
@@ -215,6 +218,33 @@ TEST(MissionConfigFleet, ResizesAGeneratedSleiFleetAndNamesTheKeyOtherwise) {
   EXPECT_MENTIONS(coinspect::testing::messageOf(
                       [&] { loadMissionScenario(read("scenario = hangar\nfleet = 1 2 4\n")); }),
                   "[mission] fleet");
+}
+
+// `[mission] scenario`: a generator's name is the generator even when the INI's folder holds a
+// folder of that name (a run's output, `--out slei-b`); any other value is a path from the INI's
+// folder.
+TEST(MissionConfigScenario, AGeneratorNameIsNotHiddenByAFolderBesideTheIni) {
+  const auto dir = coinspect::testing::scratchDir("mission_scenario_source");
+  std::filesystem::create_directories(dir / "slei-b");
+  world::saveScenario(world::generateScenario("slei-b", 3), dir / "scene");
+  const auto read = [&](const std::string& scenario) {
+    coinspect::testing::writeFile(dir / "mission.ini", "[mission]\nscenario = " + scenario +
+                                                           "\nscenario_seed = 3\n"
+                                                           "[strategy]\nname = x\n");
+    return MissionConfig::read(Config::fromFile(dir / "mission.ini"));
+  };
+  const auto generatedHash = world::generateScenario("slei-b", 3).contentHash();
+  const auto named = read("slei-b");
+  EXPECT_EQ(named.scenario, "slei-b");
+  EXPECT_EQ(loadMissionScenario(named).contentHash(), generatedHash);
+  const auto folder = read("scene");
+  EXPECT_EQ(folder.scenario, (dir / "scene").string());
+  EXPECT_EQ(loadMissionScenario(folder).contentHash(), generatedHash);
+  const std::string missing =
+      coinspect::testing::messageOf([&] { loadMissionScenario(read("nowhere")); });
+  EXPECT_MENTIONS(missing, "mission.ini");
+  EXPECT_MENTIONS(missing, "[mission] scenario");
+  EXPECT_MENTIONS(missing, (dir / "nowhere").string());
 }
 
 }  // namespace
