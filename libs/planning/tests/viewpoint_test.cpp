@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "coinspect/core/random.h"
+#include "coinspect/planning/coverage.h"
 
 namespace coinspect::planning {
 namespace {
@@ -117,6 +118,46 @@ TEST(Viewpoint, PushedOutOfBlockedCellsAlongTheLineOfSight) {
   EXPECT_GT(std::abs(view.viewingDistance - fullResolutionDistance(options.optics)), 0.4);
   EXPECT_LT(axisMiss(view, wall.centre), 1e-6);
   checkConsistent(view, options);
+}
+
+TEST(Viewpoint, TurnedAwayFromTheNormalWhenItsWholeLineIsBlocked) {
+  VoxelGrid grid(Vec3(-20, -20, 0), 0.5, Index3(80, 80, 40), CellState::Free);
+  // A thin post on the normal of a wall facing +x, from 1 m out to beyond every push, and the
+  // wall itself (x < 0).
+  for (int x = 0; x < 80; ++x)
+    for (int y = 0; y < 80; ++y)
+      for (int z = 0; z < 40; ++z) {
+        const Vec3 c = grid.centre(Index3(x, y, z));
+        const bool post = c.x() > 1.0 && std::abs(c.y()) < 0.5 && std::abs(c.z() - 10.0) < 3.0;
+        if (post || c.x() < 0.0) grid.set(Index3(x, y, z), CellState::Occupied);
+      }
+  grid.computeClearance(5.0, false);
+  ViewpointOptions options;
+  options.grid = &grid;
+  options.pathOptions.clearance = 0.5;
+  const SurfacePatch wall{Vec3(0.01, 0, 10), Vec3(1, 0, 0)};
+  EXPECT_FALSE(makeViewpoint(wall, options).free);  // the normal's line only
+
+  options.obliqueAngles = {30 * kDeg, 55 * kDeg};
+  const Viewpoint view = makeViewpoint(wall, options);
+  ASSERT_TRUE(view.free);
+  EXPECT_TRUE(cellTraversable(grid, grid.cellOf(view.body), options.pathOptions));
+  const Vec3 seen = (view.camera - wall.centre).normalized();
+  EXPECT_NEAR(std::acos(seen.dot(wall.normal)), 30 * kDeg, 1e-6);  // the first angle works
+  EXPECT_NEAR(seen.z(), 0.0, 1e-9);                                // a horizontal side first
+  EXPECT_TRUE(lineOfSight(grid, view.camera, wall.centre + 0.75 * seen, false));
+  EXPECT_LT(axisMiss(view, wall.centre), 1e-6);
+  checkConsistent(view, options);
+
+  // Walled in on every side but the blocked normal: nothing free, the straight view returned.
+  for (int x = 0; x < 80; ++x)
+    for (int y = 0; y < 80; ++y)
+      for (int z = 0; z < 40; ++z) {
+        const Vec3 c = grid.centre(Index3(x, y, z));
+        if (c.x() > 0.5 && c.x() < 1.0) grid.set(Index3(x, y, z), CellState::Occupied);
+      }
+  grid.computeClearance(5.0, false);
+  EXPECT_FALSE(makeViewpoint(wall, options).free);
 }
 
 TEST(Viewpoint, AimGimbalMatchesTheSimulatorConvention) {

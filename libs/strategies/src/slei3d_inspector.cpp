@@ -15,6 +15,10 @@ constexpr double kStatusPeriod = 1.0;   // s between status messages while the e
 constexpr double kRetryWait = 20.0;     // s before trying again to reach a wait point
 constexpr double kViewDistance = 3.0;   // m from a feature to its own inspection view
 constexpr double kViewMinHeight = 1.5;  // m above the ground, the lowest camera of that view
+// With `oblique_views`, off the normal when its whole line is blocked (a fin or a neighbouring
+// wall in front of the feature): at 55 deg the camera still resolves r_des at kViewDistance,
+// where the detection pose, the next try, often sees the feature at a grazing angle.
+constexpr double kObliqueViews[] = {30.0 * M_PI / 180.0, 55.0 * M_PI / 180.0};
 
 }  // namespace
 
@@ -138,6 +142,8 @@ Vec3 Slei3dStrategy::ownViewpoint(const FeatureTask& task, bool* free) const {
   o.minHeight = groundZ_ + kViewMinHeight;
   o.grid = &map_->grid();
   o.pathOptions = flight_->searchOptions(map_->grid());
+  if (options_.obliqueViews)
+    o.obliqueAngles.assign(std::begin(kObliqueViews), std::end(kObliqueViews));
   const auto viewpoint = planning::makeViewpoint({task.position, task.normal}, o);
   *free = viewpoint.free;
   return viewpoint.body;

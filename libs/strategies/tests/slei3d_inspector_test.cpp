@@ -3,6 +3,8 @@
 // feature, then, the feature still not inspected after its patience, from the detection pose.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -33,13 +35,16 @@ agent::CameraInfo caricCamera() {
 }
 
 // Where the inspector is at each whole second, up to `until`; the feature is never inspected.
-std::vector<Vec3> fly(double until) {
+// `frame`, when given, reaches it as a teammate's key frame before its orders do (which then
+// come at 2 s, after its map has taken the frame in).
+std::vector<Vec3> fly(double until, const std::string& ini = "",
+                      const agent::KeyFrameView& frame = nullptr) {
   static agent::StrategyRegistry registry = [] {
     agent::StrategyRegistry r;
     registerSlei3d(r);
     return r;
   }();
-  const auto config = Config::fromText("", "run.ini");
+  const auto config = Config::fromText(ini, "run.ini");
   auto inspector = registry.create("slei3d", agent::StrategyContext{config,
                                                                     "slei3d",
                                                                     "i1",
@@ -71,8 +76,10 @@ std::vector<Vec3> fly(double until) {
   for (int step = 0; step * 0.1 <= until; ++step) {
     view.time = step * 0.1;
     view.messages.clear();
+    view.receivedKeyFrames.clear();
     if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
-    if (step == 1) view.messages.push_back({"e1", kOrdersTopic, encode(orders)});
+    if (step == 0 && frame) view.receivedKeyFrames.push_back(frame);
+    if (step == (frame ? 20 : 1)) view.messages.push_back({"e1", kOrdersTopic, encode(orders)});
     const auto command = inspector->decide(view);
     if (command.setpoint) view.odometry.position = command.setpoint->position;
     if (step % 10 == 0) at.push_back(view.odometry.position);
@@ -99,6 +106,37 @@ TEST(Slei3dInspector, InspectsFromInFrontOfTheFeatureThenFromWhereItWasDetected)
   EXPECT_GE(inFront, 8);  // s; the patience is 12 s
   EXPECT_GE(atDetection, 8);
   EXPECT_GT(firstAtDetection, lastInFront);
+}
+
+// A fin 0.5 m thick standing out of the face from the feature's side to 7 m in front of it, seen
+// by a teammate's LiDAR: no place on the normal's line has the flight's clearance.
+agent::KeyFrameView finInFront() {
+  auto frame = std::make_shared<agent::KeyFrame>();
+  frame->producer = "e1";
+  frame->position = Vec3(5, 3, 2);
+  for (double y = 1.0; y <= 7.6; y += 0.25)
+    for (double z = 0.25; z <= 4.0; z += 0.25)
+      frame->points.emplace_back(0.2f, static_cast<float>(y), static_cast<float>(z));
+  return frame;
+}
+
+TEST(Slei3dInspector, WithObliqueViewsTurnsAwayFromABlockedNormalBeforeTheDetectionPose) {
+  const auto heldAt = [](const std::vector<Vec3>& at) {  // the first place held for 5 s
+    for (size_t t = 5; t < at.size(); ++t)
+      if ((at[t] - at[t - 5]).norm() < 0.05) return at[t];
+    return Vec3(Vec3::Constant(1e9));
+  };
+  // Without the option the blocked own view is given up at once: the detection pose first.
+  const Vec3 plain = heldAt(fly(40.0, "", finInFront()));
+  EXPECT_LT((plain - kDetectedFrom).norm(), 0.5) << plain.transpose();
+  // With it: a place beside the fin (either side: the map does not know its far side, which is
+  // open away from the box), off the normal by less than 60 deg, in front of the face.
+  const Vec3 oblique = heldAt(fly(40.0, "[slei3d]\noblique_views = true\n", finInFront()));
+  EXPECT_GT((oblique - kDetectedFrom).norm(), 2.0) << oblique.transpose();
+  EXPECT_GT(std::abs(oblique.x()), 1.0) << oblique.transpose();
+  EXPECT_LT(oblique.y(), kFeature.y() - 1.0);
+  const Vec3 seen = (oblique - kFeature).normalized();
+  EXPECT_LT(std::acos(seen.dot(Vec3(0, -1, 0))), 60.0 * M_PI / 180.0);
 }
 
 }  // namespace

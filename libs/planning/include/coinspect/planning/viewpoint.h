@@ -9,6 +9,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "coinspect/mapping/voxel_grid.h"
 #include "coinspect/planning/camera_limits.h"
@@ -53,6 +54,11 @@ struct ViewpointOptions {
   const VoxelGrid* grid = nullptr;
   PathSearchOptions pathOptions;
   double maxPush = 3.0;
+  // With a grid, when no body position on the normal's line is free: the same search on lines
+  // turned away from the normal by each of these angles (rad, in this order), at 8 azimuths
+  // around it, keeping the first free one whose line of sight to the patch crosses no occupied
+  // cell. Empty: the normal's line only.
+  std::vector<double> obliqueAngles;
 };
 
 struct Viewpoint {
@@ -67,7 +73,7 @@ struct Viewpoint {
 // The camera on the patch's normal at the viewing distance, leaned toward the horizontal when
 // the line of sight would be steeper than the pitch limit, lifted to minHeight (then moved away
 // horizontally if the lift made it too steep), pushed out of blocked cells; the body yaw faces
-// the patch, so the gimbal yaw is 0.
+// the patch, so the gimbal yaw is 0; then, if that found no free place, the oblique lines.
 Viewpoint makeViewpoint(const SurfacePatch& patch, const ViewpointOptions& options);
 
 // Largest speed (m/s) for capturing while moving past a surface `viewingDistance` m away with

@@ -79,6 +79,9 @@ struct SleiOptions {
   double handoutPeriod = 5.0;     // s between hand-out decisions (SOEI's period)
   double meetingGrace = 10.0;     // s: a meeting partner later than this is given up (delta)
   double inspectPatience = 12.0;  // s at a feature's pose without its inspection: skip it
+  // An inspector whose own view has no free place on the normal's line turns it away from the
+  // normal (30, then 55 deg) before falling back to the detection pose (doc/strategies.md).
+  bool obliqueViews = false;
   // s, longest time to the next station meeting. The reference clamps eq. 9 at 600 s; with the
   // next box reserved an explorer done early no longer waits that long, and the lead only bounds
   // how long its results and the station's plan go unexchanged: 200 s collected 124.7 features
