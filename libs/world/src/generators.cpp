@@ -72,6 +72,13 @@ std::string sleiFleetProblem(const SleiFleet& fleet) {
   return "";
 }
 
+std::string generatorNames() {
+  std::string names;
+  for (const auto& generator : scenarioGenerators())
+    names += (names.empty() ? "" : ", ") + generator.name;
+  return names;
+}
+
 Scenario generateScenario(const std::string& name, uint64_t seed,
                           const std::optional<SleiFleet>& fleet) {
   for (const Entry& entry : entries()) {
@@ -86,10 +93,8 @@ Scenario generateScenario(const std::string& name, uint64_t seed,
     }
     return entry.generateSlei(seed, fleet);
   }
-  std::string known;
-  for (const Entry& entry : entries())
-    known += (known.empty() ? "" : ", ") + entry.info.name;
-  throw InputError("scenario", name, "unknown scenario generator (known: " + known + ")");
+  throw InputError("scenario", name,
+                   "unknown scenario generator (known: " + generatorNames() + ")");
 }
 
 }  // namespace coinspect::world

@@ -23,11 +23,9 @@ Scenario loadScenarioSource(const std::string& source, uint64_t seed,
   const fs::path path(source);
   const bool folder = fs::is_directory(path);
   if (!folder && !fs::is_regular_file(path)) {
-    std::string known;
-    for (const auto& generator : scenarioGenerators())
-      known += (known.empty() ? "" : ", ") + generator.name;
     throw InputError(
-        from, key, source + " is neither a file, a folder nor a generator (known: " + known + ")");
+        from, key,
+        source + " is neither a file, a folder nor a generator (known: " + generatorNames() + ")");
   }
   if (fleet)
     throw InputError(

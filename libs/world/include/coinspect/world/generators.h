@@ -18,6 +18,8 @@ struct GeneratorInfo {
 
 // All generators, in a fixed order.
 const std::vector<GeneratorInfo>& scenarioGenerators();
+// Their names in that order, separated by ", " (for error messages that list them).
+std::string generatorNames();
 
 // The size of a SLEI fleet: the paper's scenes fly 1 + 2 + 4 (A, B), 1 + 4 + 8 (C), 1 + 8 + 40
 // (D), its scale test 5 + 10 + 60.
