@@ -55,49 +55,7 @@ Pose bodyFor(const Vec3& camera, const Vec3& centre, const ViewpointOptions& opt
   return {camera - Eigen::AngleAxisd(yaw, Vec3::UnitZ()) * options.cameraOffset, yaw};
 }
 
-}  // namespace
-
-namespace {
-
-Viewpoint viewAlongNormal(const SurfacePatch& patch, const ViewpointOptions& options);
-
-// The directions `angle` away from `normal` at 8 azimuths: the two horizontal sides first, then
-// above and below, then the diagonals (a fixed order, so the choice is deterministic).
-std::vector<Vec3> turnedAway(const Vec3& normal, double angle) {
-  const Vec3 n = normal.normalized();
-  Vec3 side = n.cross(Vec3::UnitZ());
-  side = side.norm() > 1e-6 ? side.normalized() : Vec3::UnitX();
-  const Vec3 up = side.cross(n).normalized();
-  std::vector<Vec3> out;
-  for (const double azimuth : {0.0, 4.0, 2.0, 6.0, 1.0, 3.0, 5.0, 7.0}) {
-    const double phi = azimuth * kHalfPi / 2.0;
-    out.push_back(std::cos(angle) * n +
-                  std::sin(angle) * (std::cos(phi) * side + std::sin(phi) * up));
-  }
-  return out;
-}
-
-}  // namespace
-
-Viewpoint makeViewpoint(const SurfacePatch& patch, const ViewpointOptions& options) {
-  const Viewpoint straight = viewAlongNormal(patch, options);
-  if (straight.free || !options.grid) return straight;
-  // The camera's line of sight must not cross structure the straight line was blocked by; it
-  // stops a cell and a half short of the patch, whose own surface is occupied.
-  const double shortOfPatch = 1.5 * options.grid->resolution();
-  for (const double angle : options.obliqueAngles)
-    for (const Vec3& direction : turnedAway(patch.normal, angle)) {
-      const Viewpoint view = viewAlongNormal({patch.centre, direction}, options);
-      if (!view.free) continue;
-      const Vec3 toCamera = (view.camera - patch.centre).normalized();
-      if (lineOfSight(*options.grid, view.camera, patch.centre + shortOfPatch * toCamera, false))
-        return view;
-    }
-  return straight;
-}
-
-namespace {
-
+// The camera on the patch's normal (makeViewpoint without the oblique lines).
 Viewpoint viewAlongNormal(const SurfacePatch& patch, const ViewpointOptions& options) {
   COINSPECT_ASSERT(patch.normal.norm() > 0.0);
   const double distance =
@@ -158,6 +116,39 @@ Viewpoint viewAlongNormal(const SurfacePatch& patch, const ViewpointOptions& opt
   return view;
 }
 
+// The directions `angle` away from `normal` at 8 azimuths: the two horizontal sides first, then
+// above and below, then the diagonals (a fixed order, so the choice is deterministic).
+std::vector<Vec3> turnedAway(const Vec3& normal, double angle) {
+  const Vec3 n = normal.normalized();
+  Vec3 side = n.cross(Vec3::UnitZ());
+  side = side.norm() > 1e-6 ? side.normalized() : Vec3::UnitX();
+  const Vec3 up = side.cross(n).normalized();
+  std::vector<Vec3> out;
+  for (const double azimuth : {0.0, 4.0, 2.0, 6.0, 1.0, 3.0, 5.0, 7.0}) {
+    const double phi = azimuth * kHalfPi / 2.0;
+    out.push_back(std::cos(angle) * n +
+                  std::sin(angle) * (std::cos(phi) * side + std::sin(phi) * up));
+  }
+  return out;
+}
+
 }  // namespace
+
+Viewpoint makeViewpoint(const SurfacePatch& patch, const ViewpointOptions& options) {
+  const Viewpoint straight = viewAlongNormal(patch, options);
+  if (straight.free || !options.grid) return straight;
+  // The camera's line of sight must not cross structure the straight line was blocked by; it
+  // stops a cell and a half short of the patch, whose own surface is occupied.
+  const double shortOfPatch = 1.5 * options.grid->resolution();
+  for (const double angle : options.obliqueAngles)
+    for (const Vec3& direction : turnedAway(patch.normal, angle)) {
+      const Viewpoint view = viewAlongNormal({patch.centre, direction}, options);
+      if (!view.free) continue;
+      const Vec3 toCamera = (view.camera - patch.centre).normalized();
+      if (lineOfSight(*options.grid, view.camera, patch.centre + shortOfPatch * toCamera, false))
+        return view;
+    }
+  return straight;
+}
 
 }  // namespace coinspect::planning
