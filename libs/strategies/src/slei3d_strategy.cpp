@@ -277,6 +277,8 @@ SleiOptions readOptions(const Config& config) {
                      std::to_string(o.frontierChunk) + " is neither 0 (off) nor at least 1 m");
   o.roofPass = config.getBool("slei3d", "roof_pass", o.roofPass);
   o.obliqueViews = config.getBool("slei3d", "oblique_views", o.obliqueViews);
+  o.presumeDone = config.getBool("slei3d", "presume_done", o.presumeDone);
+  o.approachPartner = config.getBool("slei3d", "approach_partner", o.approachPartner);
   o.priorityFirst = config.getBool("slei3d", "priority_first", o.priorityFirst);
   o.deadlineBound = config.getBool("slei3d", "deadline_bound", o.deadlineBound);
   o.searchDepth =

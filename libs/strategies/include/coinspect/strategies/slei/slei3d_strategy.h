@@ -82,6 +82,13 @@ struct SleiOptions {
   // An inspector whose own view has no free place on the normal's line turns it away from the
   // normal (30, then 55 deg) before falling back to the detection pose (doc/strategies.md).
   bool obliqueViews = false;
+  // SOEI's view of an inspector (`[slei3d] presume_done`): a feature on its list whose predicted
+  // end, counted from its last status, is past is presumed inspected, and the inspector at its
+  // next one or its wait point. Off: every listed feature still ahead of it from now on.
+  bool presumeDone = true;
+  // At a hand-out's meeting point without the inspector in link, the explorer flies on towards
+  // the inspector's predicted place (`[slei3d] approach_partner`). Off: it waits at the point.
+  bool approachPartner = true;
   // s, longest time to the next station meeting. The reference clamps eq. 9 at 600 s; with the
   // next box reserved an explorer done early no longer waits that long, and the lead only bounds
   // how long its results and the station's plan go unexchanged: 200 s collected 124.7 features
@@ -335,6 +342,10 @@ class Slei3dStrategy : public agent::Strategy {
     double time = 0.0;  // planned meeting time; given up meetingGrace after it
     Orders orders;
     bool collect = false;  // no features: to take its results once its list is done
+    // The inspector's predicted place the meeting point was sampled around (SOEI's hand-outs);
+    // flown towards once, when the inspector is not in link at the point (`approach_partner`).
+    std::optional<Vec3> partnerAt;
+    bool approached = false;
   };
   std::vector<Handout> handouts_;  // in the order they are flown
   // All pending features to the inspector free soonest, met where its plan ends (caric-team's
@@ -347,7 +358,8 @@ class Slei3dStrategy : public agent::Strategy {
   std::vector<Handout> planCollection(const agent::AgentView& view) const;
   void startHandouts(std::vector<Handout> planned);
   // The inspector's hover windows as the explorer predicts them (SOEI's input).
-  planning::InspectorPlan predictedPlan(const InspectorModel& model, double now) const;
+  planning::InspectorPlan predictedPlan(const InspectorModel& model, double now,
+                                        bool presumeDone = false) const;
 
   // Inspector.
   std::optional<uint32_t> myExplorer_;  // its subgroup's, or whoever adopted it since

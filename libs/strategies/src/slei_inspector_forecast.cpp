@@ -1,0 +1,41 @@
+// An explorer's forecast of an inspector's hover windows, and its approach to a missing one.
+#include "coinspect/strategies/slei/inspector_forecast.h"
+
+#include <algorithm>
+
+namespace coinspect::strategies::slei {
+
+planning::InspectorPlan forecastInspector(const InspectorForecast& inspector, double now,
+                                          const ForecastModel& model) {
+  const auto travel = [&](const Vec3& a, const Vec3& b) {
+    return model.travelFactor * (a - b).norm() / model.speed;
+  };
+  planning::InspectorPlan plan;
+  plan.id = inspector.id;
+  double t = model.presumeDone ? inspector.since : std::max(now, inspector.since);
+  Vec3 at = inspector.position;
+  for (const Vec3& pose : inspector.poses) {
+    const double arrival = t + travel(at, pose);
+    if (model.presumeDone && arrival + model.inspectionTime + model.settle < now) {
+      t = arrival + model.inspectionTime + model.settle;
+      at = pose;
+      continue;
+    }
+    const double start = std::max(now, arrival);
+    plan.poses.push_back({pose, start, start + model.inspectionTime + model.settle});
+    t = plan.poses.back().end;
+    at = pose;
+  }
+  plan.poses.push_back(
+      {inspector.home, std::max(now, t + travel(at, inspector.home)), planning::kOpenWindowEnd});
+  return plan;
+}
+
+Vec3 approachPoint(const Vec3& here, const Vec3& expected, double stop) {
+  const Vec3 towards = expected - here;
+  const double distance = towards.norm();
+  if (distance <= stop) return here;
+  return here + towards * ((distance - stop) / distance);
+}
+
+}  // namespace coinspect::strategies::slei
