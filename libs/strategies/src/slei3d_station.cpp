@@ -15,13 +15,10 @@ constexpr double kMinRemaining = 50.0;   // s (the reference's floor)
 constexpr double kNewBoxLead = 60.0;     // s to the first meeting in a new box (the reference)
 constexpr double kPresumedLost = 6.0;    // meeting graces after its time: the explorer is lost
 constexpr double kUnreachedFor = 300.0;  // s more when the station never got there
-constexpr double kStuckDistance = 0.2;   // m: moved less than this ...
-constexpr double kStuckTime = 3.0;       // s ... for this long while driving: blocked
-constexpr double kBlockAhead = 0.8, kBlockRadius = 0.7;  // m: the ground it then blocks
-constexpr double kRechargeLevel = 0.2;  // battery level an explorer must be back by (the paper)
-constexpr double kChargeSettle = 5.0;   // s for an explorer to get above the charger
-constexpr double kLargerBox = 1.01;     // a box this much larger than a free one is split
-constexpr double kBesideMeeting = 2.5;  // m between two explorers' places at one meeting
+constexpr double kRechargeLevel = 0.2;   // battery level an explorer must be back by (the paper)
+constexpr double kChargeSettle = 5.0;    // s for an explorer to get above the charger
+constexpr double kLargerBox = 1.01;      // a box this much larger than a free one is split
+constexpr double kBesideMeeting = 2.5;   // m between two explorers' places at one meeting
 
 }  // namespace
 
@@ -188,7 +185,8 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
         // learnt from the key frames it carries).
         place = boxCorner(boxes_[static_cast<size_t>(reply.box)], options_.plan.cornerOffset,
                           here.z(), here);
-        const planning::Vec2 reach = ground_->nearestReachable(here.head<2>(), place.head<2>());
+        const planning::Vec2 reach =
+            drive_->ground().nearestReachable(here.head<2>(), place.head<2>());
         place = Vec3(reach.x(), reach.y(), here.z());
       }
       if (staticStation()) place = staticPlace_, lead = options_.fixInterval;
@@ -439,37 +437,16 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
   return command;
 }
 
-// Along a ground path around the boxes' footprints. The station has no map: a wall outside the
-// boxes stops it (the simulator keeps a ground vehicle out of structures), and a station that
-// has not moved for a while blocks the ground just ahead of it and plans again.
+// Along a ground path around the boxes' footprints (planning::GroundDrive). The station has no
+// map: a wall outside the boxes stops it (the simulator keeps a ground vehicle out of
+// structures), and a station that has not moved for a while blocks the ground just ahead of it
+// and plans again.
 void Slei3dStrategy::driveStation(const agent::AgentView& view, const Vec3& goal,
                                   agent::AgentCommand& command) {
-  const Vec3 here = view.odometry.position;
-  const planning::Vec2 at = here.head<2>();
-  if (!drivenYet_) {
-    drivenYet_ = true;
-    lastMoved_ = here;
-    lastMovedTime_ = view.time;
-  }
-  const bool arrived = std::hypot(goal.x() - here.x(), goal.y() - here.y()) <= kArrived;
-  if ((here - lastMoved_).norm() > kStuckDistance || arrived) {
-    lastMoved_ = here;
-    lastMovedTime_ = view.time;
-  } else if (view.time - lastMovedTime_ > kStuckTime && !drive_.empty()) {
-    const planning::Vec2 ahead = (drive_.front() - at).normalized();
-    ground_->blockDisc(at + kBlockAhead * ahead, kBlockRadius);
-    driveGoal_ = Vec3::Constant(1e300);  // plan again
-    lastMovedTime_ = view.time;
-  }
-  if ((goal - driveGoal_).norm() > 1e-6) {
-    driveGoal_ = goal;
-    drive_ = ground_->path(at, goal.head<2>());
-    if (drive_.empty()) drive_ = {goal.head<2>()};  // no path known: straight, and learn
-  }
-  while (drive_.size() > 1 && (drive_.front() - at).norm() <= kArrived)
-    drive_.erase(drive_.begin());
+  const planning::Vec2 to =
+      drive_->step(view.odometry.position.head<2>(), goal.head<2>(), view.time);
   agent::AgentSetpoint setpoint;
-  setpoint.position = Vec3(drive_.front().x(), drive_.front().y(), goal.z());
+  setpoint.position = Vec3(to.x(), to.y(), goal.z());
   command.setpoint = setpoint;
 }
 

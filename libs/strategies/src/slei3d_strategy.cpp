@@ -60,7 +60,7 @@ void Slei3dStrategy::initialise(const agent::AgentView& view) {
   relay_ = std::make_unique<coinspect_strategy::KeyFrameRelay>(relay, names_);
   if (unit_.role == agent::Role::GroundStation) {
     // The ground it drives on; it learns walls from the key frames it carries.
-    ground_ = std::make_unique<planning::GroundGrid>(stationGroundGrid(
+    drive_ = std::make_unique<planning::GroundDrive>(stationGroundGrid(
         boxes_, view.odometry.position.head<2>(), unit_.radius, !options_.unknownWorkspace));
     return;
   }
@@ -195,8 +195,9 @@ double Slei3dStrategy::boxExploredFraction(int32_t box) const {
 void Slei3dStrategy::learnGround(const agent::KeyFrame& frame) {
   if (staticStation()) return;  // it never drives
   // A station that learns a wall plans its way again.
-  if (blockGroundObstacles(*ground_, frame.points, groundZ_, unit_.radius + kGroundClearance) > 0)
-    driveGoal_ = Vec3::Constant(1e300);
+  drive_->learn([&](planning::GroundGrid& ground) {
+    return blockGroundObstacles(ground, frame.points, groundZ_, unit_.radius + kGroundClearance);
+  });
 }
 
 agent::AgentCommand Slei3dStrategy::fly(const agent::AgentView& view, std::optional<Vec3> aim) {
@@ -251,11 +252,12 @@ agent::AgentCommand Slei3dStrategy::decide(const agent::AgentView& view) {
 
 namespace {
 
-SleiOptions readOptions(const Config& config) {
+SleiOptions readOptions(const Config& config, SleiVariant variant) {
   const auto number = [&](const char* key, double fallback, double low, double high) {
     return runtime::readNumber(config, "slei3d", key, fallback, low, high);
   };
   SleiOptions o;
+  o.variant = variant;
   o.speed = number("speed", o.speed, 0.1, 20.0);
   o.exploreHeight = number("explore_height", o.exploreHeight, 1.0, 100.0);
   o.meetHeight = number("meet_height", o.meetHeight, 1.0, 100.0);
@@ -270,7 +272,11 @@ SleiOptions readOptions(const Config& config) {
   o.fixInterval = number("fix_interval", o.fixInterval, 10.0, 3600.0);
   o.plan.evenSplit = config.getBool("slei3d", "even_split", o.plan.evenSplit);
   o.reserveNextBox = config.getBool("slei3d", "reserve_next_box", o.reserveNextBox);
-  o.shareWork = config.getBool("slei3d", "share_work", o.shareWork);
+  // explore-then-inspect hands out only once no box is left for an explorer: one that waited
+  // for a share of another's box never got to hand out (slei-c scene seed 2, 3000 s: two
+  // explorers waited for shares from 752 and 787 s to the end, a third from 1798 s, while the
+  // fourth still explored; nothing was handed out).
+  o.shareWork = config.getBool("slei3d", "share_work", variant != SleiVariant::ExploreFirst);
   o.frontierChunk = number("frontier_chunk", o.frontierChunk, 0.0, 100.0);
   if (o.frontierChunk > 0.0 && o.frontierChunk < 1.0)
     throw InputError(config.source(), "[slei3d] frontier_chunk",
@@ -305,9 +311,7 @@ void registerSlei3d(agent::StrategyRegistry& registry) {
       {"explore-then-inspect", SleiVariant::ExploreFirst}};
   for (const auto& [name, variant] : variants)
     registry.registerStrategy(name, [variant = variant](const agent::StrategyContext& context) {
-      auto options = readOptions(context.config);
-      options.variant = variant;
-      return std::make_unique<Slei3dStrategy>(context, options);
+      return std::make_unique<Slei3dStrategy>(context, readOptions(context.config, variant));
     });
 }
 

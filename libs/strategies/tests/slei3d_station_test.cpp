@@ -339,6 +339,20 @@ TEST(Slei3dStation, WithNoBoxFreeTheBoxOfOneAtWorkIsSplitForOneWithout) {
   EXPECT_EQ(replyTo(*alone, "e2", 70.0, reportOf(1, true, 1), &two)->box, -1);
   atWork.meetingNumber = 2;
   EXPECT_EQ(replyTo(*alone, "e1", toE1->next.time, atWork, &two)->box, 0);
+
+  // explore-then-inspect shares no work unless told to: an explorer without a box is done (it
+  // then hands out what it found) rather than sent to wait beside e1's next meeting.
+  for (const bool share : {false, true}) {
+    auto eti =
+        plannedStation(share ? "[slei3d]\nshare_work = true\n" : "", &two, "explore-then-inspect");
+    atWork.meetingNumber = 1;
+    const auto e1 = replyTo(*eti, "e1", 60.0, atWork, &two);
+    ASSERT_TRUE(e1);
+    const auto e2 = replyTo(*eti, "e2", 70.0, reportOf(1, true, 1), &two);
+    ASSERT_TRUE(e2);
+    EXPECT_EQ(e2->box, -1);
+    EXPECT_EQ(std::abs((e2->next.place - e1->next.place).norm() - 2.5) < 1e-9, share) << share;
+  }
 }
 
 TEST(Slei3dStation, BadWorkspaceAndSearchKeysAreErrors) {

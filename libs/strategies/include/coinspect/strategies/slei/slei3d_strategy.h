@@ -27,7 +27,7 @@
 #include "coinspect/agent/strategy.h"
 #include "coinspect/planning/coverage.h"
 #include "coinspect/planning/detection_coverage.h"
-#include "coinspect/planning/ground_path.h"
+#include "coinspect/planning/ground_drive.h"
 #include "coinspect/planning/meeting_route.h"
 #include "coinspect/strategies/coinspect/keyframe_relay.h"
 #include "coinspect/strategies/runtime/flight.h"
@@ -254,12 +254,7 @@ class Slei3dStrategy : public agent::Strategy {
   double holdUntil_ = -1e300;  // [energy]: it stays where it is while an explorer charges
   // Its ground paths: around the boxes' footprints, the walls in the key frames it carries and
   // where it found its way blocked.
-  std::unique_ptr<planning::GroundGrid> ground_;
-  bool drivenYet_ = false;
-  std::vector<planning::Vec2> drive_;  // waypoints to the next meeting place
-  Vec3 driveGoal_ = Vec3::Constant(1e300);
-  Vec3 lastMoved_ = Vec3::Zero();  // where it was when it last moved
-  double lastMovedTime_ = 0.0;
+  std::unique_ptr<planning::GroundDrive> drive_;
   void driveStation(const agent::AgentView& view, const Vec3& goal, agent::AgentCommand& command);
 
   // Explorer.
