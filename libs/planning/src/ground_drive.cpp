@@ -38,9 +38,9 @@ Vec2 GroundDrive::step(const Vec2& at, const Vec2& goal, double time) {
   while (path_.size() > 1 && (path_.front() - at).norm() <= options_.arrived)
     path_.erase(path_.begin());
   // At the goal, or at the end of the path when that is as near as it gets: standing, not stuck.
-  const bool there = (goal - at).norm() <= options_.arrived ||
-                     (path_.size() == 1 && (path_.front() - at).norm() <= options_.arrived);
-  if ((at - lastMoved_).norm() > options_.stuckDistance || there) {
+  there_ = (goal - at).norm() <= options_.arrived ||
+           (path_.size() == 1 && (path_.front() - at).norm() <= options_.arrived);
+  if ((at - lastMoved_).norm() > options_.stuckDistance || there_) {
     lastMoved_ = at;
     lastMovedTime_ = time;
   } else if (time - lastMovedTime_ > options_.stuckTime) {

@@ -39,6 +39,10 @@ class GroundDrive {
   // The place to drive to now, standing at `at` at `time`, on the way to `goal`.
   Vec2 step(const Vec2& at, const Vec2& goal, double time);
 
+  // At the last step it stood at the goal, or at the end of a path that stops short of it (the
+  // goal lies where no known path reaches): as near as it gets.
+  bool there() const { return there_; }
+  const Vec2& goal() const { return goal_; }            // the goal of the last step
   const GroundGrid& ground() const { return ground_; }  // known and guessed
   size_t guesses() const { return guesses_; }           // discs blocked since the last forgetting
   size_t forgotten() const { return forgotten_; }       // times it forgot its guesses
@@ -51,7 +55,7 @@ class GroundDrive {
   std::vector<Vec2> path_;  // waypoints to the goal, the last one the goal or nearest to it
   Vec2 goal_ = Vec2::Constant(1e300);
   bool replan_ = true;
-  bool started_ = false;
+  bool started_ = false, there_ = false;
   Vec2 lastMoved_ = Vec2::Zero();  // where it was when it last moved
   double lastMovedTime_ = 0.0;
   size_t guesses_ = 0, forgotten_ = 0;
