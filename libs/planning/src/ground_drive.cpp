@@ -27,6 +27,15 @@ void GroundDrive::plan(const Vec2& at, const Vec2& goal) {
   }
 }
 
+void GroundDrive::dropPassed(const Vec2& at) {
+  while (path_.size() > 1 && (path_.front() - at).norm() <= options_.arrived)
+    path_.erase(path_.begin());
+}
+
+bool GroundDrive::there(const Vec2& goal) const {
+  return there_ && (goal - goal_).norm() <= 1e-6;
+}
+
 Vec2 GroundDrive::step(const Vec2& at, const Vec2& goal, double time) {
   if (!started_) {
     started_ = true;
@@ -35,8 +44,7 @@ Vec2 GroundDrive::step(const Vec2& at, const Vec2& goal, double time) {
   }
   if ((goal - goal_).norm() > 1e-6) replan_ = true;
   if (replan_) plan(at, goal);
-  while (path_.size() > 1 && (path_.front() - at).norm() <= options_.arrived)
-    path_.erase(path_.begin());
+  dropPassed(at);
   // At the goal, or at the end of the path when that is as near as it gets: standing, not stuck.
   there_ = (goal - at).norm() <= options_.arrived ||
            (path_.size() == 1 && (path_.front() - at).norm() <= options_.arrived);
@@ -49,8 +57,7 @@ Vec2 GroundDrive::step(const Vec2& at, const Vec2& goal, double time) {
     ++guesses_;
     lastMovedTime_ = time;
     plan(at, goal);
-    while (path_.size() > 1 && (path_.front() - at).norm() <= options_.arrived)
-      path_.erase(path_.begin());
+    dropPassed(at);
   }
   return path_.front();
 }

@@ -26,9 +26,10 @@ TEST(GroundDrive, DrivesAroundWhatItKnows) {
   EXPECT_TRUE(clearOn(walledGround(), start, to));
   EXPECT_GT(std::abs(to.y()), 8.0);  // round one of its ends
   EXPECT_EQ(drive.guesses(), 0u);
-  EXPECT_FALSE(drive.there());
+  EXPECT_FALSE(drive.there(goal));
   drive.step(goal + Vec2(0.3, 0.0), goal, 30.0);
-  EXPECT_TRUE(drive.there());
+  EXPECT_TRUE(drive.there(goal));
+  EXPECT_FALSE(drive.there(start));  // not on the way there
 }
 
 TEST(GroundDrive, StandingStillWhileDrivingBlocksTheGroundAheadAndPlansAgain) {
@@ -101,12 +102,12 @@ TEST(GroundDrive, AGoalNoPathReachesIsApproachedAndWaitedAtNotGuessedAround) {
   ASSERT_TRUE(known.path(Vec2(-12, 0), goal).empty());
   GroundDrive drive(known);
   const Vec2 to = drive.step(Vec2(-12, 0), goal, 0.0);
-  EXPECT_FALSE(drive.there());
+  EXPECT_FALSE(drive.there(goal));
   EXPECT_NEAR(to.x(), -5.5, 0.3);  // outside the ring's wall, nearest the goal
   EXPECT_NEAR(to.y(), 0.0, 0.3);
   for (double t = 1.0; t <= 60.0; t += 1.0) {
     EXPECT_EQ(drive.step(to, goal, t), to);
-    EXPECT_TRUE(drive.there());  // as near as it gets
+    EXPECT_TRUE(drive.there(goal));  // as near as it gets
   }
   EXPECT_EQ(drive.guesses(), 0u);
 }

@@ -423,8 +423,7 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
   // the reply) left it 1 m off, out of link of the explorer hovering 4 m off the other way, and
   // it waited there the long grace of a place never reached while every other meeting went by
   // (slei-c scene seed 3, explore-then-inspect: 1210 to 1552 s).
-  const bool standing =
-      drive_->there() && (drive_->goal() - next.meeting.place.head<2>()).norm() < 1e-6;
+  const bool standing = drive_->there(next.meeting.place.head<2>());
   if ((distance <= kArrived || staticStation() || standing) && !arrivedAt_) arrivedAt_ = view.time;
   // A place it cannot get to is given up too, a long while after (kUnreachedFor).
   const double grace = kPresumedLost * options_.meetingGrace;

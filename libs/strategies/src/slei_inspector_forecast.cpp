@@ -10,20 +10,20 @@ planning::InspectorPlan forecastInspector(const InspectorForecast& inspector, do
   const auto travel = [&](const Vec3& a, const Vec3& b) {
     return model.travelFactor * (a - b).norm() / model.speed;
   };
+  const auto hoverEnd = [&](double start) { return start + model.inspectionTime + model.settle; };
   planning::InspectorPlan plan;
   plan.id = inspector.id;
   double t = model.presumeDone ? inspector.since : std::max(now, inspector.since);
   Vec3 at = inspector.position;
   for (const Vec3& pose : inspector.poses) {
     const double arrival = t + travel(at, pose);
-    if (model.presumeDone && arrival + model.inspectionTime + model.settle < now) {
-      t = arrival + model.inspectionTime + model.settle;
-      at = pose;
-      continue;
+    if (model.presumeDone && hoverEnd(arrival) < now) {
+      t = hoverEnd(arrival);  // presumed done
+    } else {
+      const double start = std::max(now, arrival);
+      plan.poses.push_back({pose, start, hoverEnd(start)});
+      t = hoverEnd(start);
     }
-    const double start = std::max(now, arrival);
-    plan.poses.push_back({pose, start, start + model.inspectionTime + model.settle});
-    t = plan.poses.back().end;
     at = pose;
   }
   plan.poses.push_back(

@@ -39,16 +39,16 @@ class GroundDrive {
   // The place to drive to now, standing at `at` at `time`, on the way to `goal`.
   Vec2 step(const Vec2& at, const Vec2& goal, double time);
 
-  // At the last step it stood at the goal, or at the end of a path that stops short of it (the
-  // goal lies where no known path reaches): as near as it gets.
-  bool there() const { return there_; }
-  const Vec2& goal() const { return goal_; }            // the goal of the last step
+  // At the last step, on the way to `goal`, it stood at it or at the end of a path that stops
+  // short of it (the goal lies where no known path reaches): as near as it gets.
+  bool there(const Vec2& goal) const;
   const GroundGrid& ground() const { return ground_; }  // known and guessed
   size_t guesses() const { return guesses_; }           // discs blocked since the last forgetting
   size_t forgotten() const { return forgotten_; }       // times it forgot its guesses
 
  private:
   void plan(const Vec2& at, const Vec2& goal);
+  void dropPassed(const Vec2& at);  // waypoints within `arrived` of it, but the last
 
   GroundDriveOptions options_;
   GroundGrid known_, ground_;
