@@ -28,8 +28,10 @@ void detectFeatures(const FeatureSensor& sensor, const world::Vec3& position, do
     if (std::abs(std::atan2(d.z(), horizontal)) > sensor.halfElevation) continue;
     if (horizontal > 1e-9 && std::abs(wrapAngle(std::atan2(d.y(), d.x()) - yaw)) > sensor.halfYaw)
       continue;
-    if (feature.normal.dot(-d) <= 0.0) continue;  // seen from behind its surface
-    if (!caster.segmentClear(position, feature.position, kFeatureLineOfSightTolerance)) continue;
+    if (sensor.lineOfSight) {
+      if (feature.normal.dot(-d) <= 0.0) continue;  // seen from behind its surface
+      if (!caster.segmentClear(position, feature.position, kFeatureLineOfSightTolerance)) continue;
+    }
     found.push_back(i);
   }
 }

@@ -72,6 +72,23 @@ TEST(FeatureDetection, AFeatureSeenFromBehindItsSurfaceIsNotDetected) {
   EXPECT_EQ(detect(scene, {5, 0, 1}, M_PI), (Found{0}));
 }
 
+// The reference code's detector (no line of sight, no facing test): the feature behind the panel
+// and one seen from behind its surface are found; the field of view and range still decide.
+TEST(FeatureDetection, WithoutTheLineOfSightTestOnlyTheFieldOfViewAndRangeDecide) {
+  FeatureSensor reference;
+  reference.lineOfSight = false;
+  const Scene scene;
+  EXPECT_EQ(detect(scene, {0, 0, 1}, 0.0, reference), (Found{0, 1, 2, 5}));
+  EXPECT_TRUE(detect(scene, {0, 0, 1}, M_PI, reference).empty());
+  EXPECT_TRUE(detect(scene, {-2.5, 0, 1}, 0.0, reference).empty());
+  world::InterestPoint back = facingMinusX(3.0, 0.0, 1.0);
+  back.normal = world::Vec3(1, 0, 0);
+  Scene behind;
+  behind.features = world::InterestPointSet({back});
+  EXPECT_EQ(detect(behind, {0, 0, 1}, 0.0, reference), (Found{0}));
+  EXPECT_TRUE(detect(behind, {0, 0, 1}, 0.0).empty());
+}
+
 TEST(InspectionTimer, ARunOfConsecutiveCapturesSpanningTheDurationInspects) {
   InspectionTimer timer(3, 0.3);
   std::vector<uint32_t> done;

@@ -102,6 +102,7 @@ FeatureConfig readFeatures(const Config& config) {
   out.sensor.halfYaw = angleDegrees(config, "detect_half_yaw", out.sensor.halfYaw);
   out.sensor.halfElevation =
       angleDegrees(config, "detect_half_elevation", out.sensor.halfElevation);
+  out.sensor.lineOfSight = config.getBool(f, "detect_line_of_sight", out.sensor.lineOfSight);
   out.inspectTime = config.getDouble(f, "inspect_time", out.inspectTime);
   if (!(out.inspectTime >= 0.0) || !std::isfinite(out.inspectTime))
     throw InputError(config.source(), "[features] inspect_time", "must be a finite time >= 0 s");

@@ -415,6 +415,28 @@ TEST(FeatureMission, EachExplorerDetectsWithinItsOwnRange) {
   }
 }
 
+// `detect_line_of_sight = false` is the reference code's detector: a feature on the far face of the
+// wall (4.6 m from the explorer, in its field of view) is detected through the wall.
+TEST(FeatureMission, WithoutTheLineOfSightTestAFeatureBehindTheWallIsDetected) {
+  for (const bool lineOfSight : {true, false}) {
+    Seen seen;
+    const auto registry = scripted(12.0, seen);
+    auto scene = featureScene();
+    auto points = scene.interestPoints.points();
+    world::InterestPoint behind;
+    behind.position = world::Vec3(11.0, -1.0, 4.0);
+    behind.normal = world::Vec3(1, 0, 0);
+    points.push_back(behind);
+    scene.interestPoints = world::InterestPointSet(points);
+    const auto config = Config::fromText(kFeatureMission + "[features]\ndetect_line_of_sight = " +
+                                             (lineOfSight ? "true" : "false") + "\n",
+                                         "features.ini");
+    Mission mission(scene, config, registry);
+    mission.run();
+    EXPECT_EQ(mission.summary().features.discovered, lineOfSight ? 3u : 4u) << lineOfSight;
+  }
+}
+
 TEST(FeatureMission, BadFeatureKeysAreErrorsNamingTheKey) {
   Seen seen;
   const auto registry = scripted(12.0, seen);
@@ -428,6 +450,8 @@ TEST(FeatureMission, BadFeatureKeysAreErrorsNamingTheKey) {
   expectError(kFeatureMission + "[features]\ninspect_score = 0\n", "inspect_score");
   expectError(kFeatureMission + "[features]\ndetect_half_yaw = 200\n", "detect_half_yaw");
   expectError(kFeatureMission + "[features]\ndetect_range = -1\n", "detect_range");
+  expectError(kFeatureMission + "[features]\ndetect_line_of_sight = maybe\n",
+              "detect_line_of_sight");
   expectError(kFeatureMission + "[features]\nmeeting_gap = nan\n", "meeting_gap");
   expectError(kFeatureMission + "[features]\npunctuality_tolerance = -1\n",
               "punctuality_tolerance");

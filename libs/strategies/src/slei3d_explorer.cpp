@@ -20,6 +20,8 @@ constexpr double kReplanPeriod = 15.0;      // s between sweep plans (the map gr
 constexpr double kStationAntenna = 0.5;     // m above the ground, a station's link end
 constexpr double kApproachReach = 4.5;      // m: within the 5 m link with a margin
 constexpr double kApproachRetry = 3.0;      // s between approaches after a failed flight
+constexpr double kReaimPeriod = 5.0;        // s between checks of a station meeting point ...
+constexpr double kReaimOffset = 1.0;        // m ... left by more than this: flown to again
 constexpr double kEarlyPatience = 30.0;     // s past the expected time at an early stop
 constexpr double kLostFor = 60.0;           // s an inspector missed twice is not looked for
 constexpr double kPresumedFailed = 120.0;   // s without its status: a missed inspector failed
@@ -415,12 +417,15 @@ Vec3 Slei3dStrategy::meetingPointNear(const agent::AgentView& view, const Vec3& 
   return best;
 }
 
+Vec3 Slei3dStrategy::stationPoint(const agent::AgentView& view, const Vec3& place) const {
+  const Vec3 station(place.x(), place.y(), groundZ_ + kStationAntenna);
+  return meetingPointNear(view, station, Vec3(place.x(), place.y(), groundZ_ + options_.meetHeight),
+                          true);
+}
+
 void Slei3dStrategy::goToStation(const agent::AgentView& view, const Vec3& place) {
   lastApproach_ = view.time;
-  const Vec3 station(place.x(), place.y(), groundZ_ + kStationAntenna);
-  flight_->goTo(meetingPointNear(view, station,
-                                 Vec3(place.x(), place.y(), groundZ_ + options_.meetHeight), true),
-                options_.speed);
+  flight_->goTo(stationPoint(view, place), options_.speed);
 }
 
 // Every open patch the detector passes over counts as swept, on the way to a stop as well.
@@ -834,6 +839,22 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
       }
       if (flight_->failed() && view.time - lastApproach_ >= kApproachRetry)
         goToStation(view, stationPlace);
+      // Pushed off its point while it waits (it backs off from a higher-priority unit come to
+      // meet the station too) and out of link once the station is due: back to the point. The
+      // flight holds where it backed off to for good, and a goal reached once is not flown
+      // again unless the flight is reset (slei-c, scene seed 1: explorer4 backed off from
+      // explorer3 to 5.05 m from the waiting station, was given up at 271 s and hovered there
+      // for the rest of the run, exploring nothing).
+      const double due = earlyPlace_ ? earlyBy_ : stationMeeting_.time;
+      if (flight_->done() && !neighbour(view, stationIndex) && view.time >= due &&
+          view.time - lastApproach_ >= kReaimPeriod) {
+        lastApproach_ = view.time;
+        const Vec3 point = stationPoint(view, stationPlace);
+        if ((point - here).norm() > kReaimOffset) {
+          flight_->hover();
+          flight_->goTo(point, options_.speed);
+        }
+      }
       if (neighbour(view, stationIndex)) {
         phase_ = ExplorerPhase::AtStation;
         if (view.time - lastSend_ >= kReportPeriod) {

@@ -2,7 +2,7 @@
 // explorer done with its box goes on to the next one before its station meeting; without one, it
 // looks for a late station along the station's route; before it is done with a box, it flies
 // over it (the roof pass); it comes back for an inspector's results until its list is done, and
-// not once it is done, inspected or skipped.
+// not once it is done, inspected or skipped; pushed off its station meeting point, it goes back.
 #include <gtest/gtest.h>
 
 #include <optional>
@@ -196,6 +196,40 @@ TEST(Slei3dExplorer, ItComesBackForTheResultsOfAnInspectorStillAtItsList) {
   EXPECT_EQ(late[2], 3u);
   // Done by the first collection: the hand-out and that one.
   EXPECT_EQ(ordersToInspector(2, 120.0), (std::vector<uint32_t>{1, 2}));
+}
+
+// e1 (its box explored at once: nothing is scanned) waits at its point for the station's meeting
+// due at 40 s at (20, 4) (never in link); from 60 s to 70 s e0, of higher priority, hovers 1 m from
+// it and pushes it away. Once the meeting is due, a unit pushed off its point flies back to it
+// (before, it held where it had backed off to for good: on slei-c an explorer 5.05 m from the
+// waiting station).
+TEST(Slei3dExplorer, PushedOffItsStationMeetingPointItGoesBack) {
+  const auto config = Config::fromText("", "run.ini");
+  auto explorer =
+      makeExplorer(config, "slei3d",
+                   {{"e0", Role::Explorer}, {"e1", Role::Explorer}, {"gcs", Role::GroundStation}});
+  FleetPlan plan;
+  plan.subgroups.push_back({1, {}, 0, {Vec3(20, 4, 0), 40.0}, 2});
+  agent::AgentView view = startView();
+  Vec3 point = Vec3::Zero(), pushedTo = Vec3::Zero();
+  for (int step = 0; step * 0.1 <= 100.0; ++step) {
+    view.time = step * 0.1;
+    view.messages.clear();
+    if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
+    view.neighbours.clear();
+    if (view.time >= 60.0 && view.time < 70.0) {
+      agent::NeighbourInfo pusher{"e0", Role::Explorer, {}};
+      pusher.odometry.position = point + Vec3(1, 0, 0);
+      view.neighbours.push_back(pusher);
+    }
+    const auto command = explorer->decide(view);
+    if (command.setpoint) view.odometry.position = command.setpoint->position;
+    if (step == 590) point = view.odometry.position;
+    if (step == 699) pushedTo = view.odometry.position;
+  }
+  EXPECT_LT((point - Vec3(20, 4, 0)).head<2>().norm(), 4.5);  // it was at its point
+  EXPECT_GT((pushedTo - point).norm(), 2.0);                  // e0 pushed it away
+  EXPECT_LT((view.odometry.position - point).norm(), 0.5);    // back at its point
 }
 
 // An inspector that reports its list done without the feature (it skipped it) is free: e1 does

@@ -4,7 +4,8 @@
 // The reference code detects a feature within 5 m, +-45 deg of the heading and +-30 deg of
 // elevation, ignores occlusion and detects at most one feature per second. Here every feature in
 // the field of view is detected at once, only when the line of sight to it is clear and it faces
-// the sensor (a detector sees surfaces from the front).
+// the sensor (a detector sees surfaces from the front); `lineOfSight = false` drops both tests, as
+// the reference code does (to fly its conditions; the rate cap is not modelled).
 #pragma once
 
 #include <cstdint>
@@ -19,6 +20,7 @@ struct FeatureSensor {
   double range = 5.0;                         // m, sensor to feature
   double halfYaw = 0.7853981633974483;        // rad, either side of the body heading
   double halfElevation = 0.5235987755982988;  // rad, above and below the horizontal
+  bool lineOfSight = true;                    // needs a clear sight line and a facing surface
 };
 
 // A segment to a feature counts as clear when its first hit is this close to the feature (the

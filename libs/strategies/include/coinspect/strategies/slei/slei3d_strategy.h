@@ -204,6 +204,8 @@ class Slei3dStrategy : public agent::Strategy {
   void adoptInspectors(const agent::AgentView& view, const std::vector<Adoption>& adopt);
   // Done with the box before the meeting: the station's stop where it can be caught soonest.
   void goToStation(const agent::AgentView& view, const Vec3& place);
+  // Where it meets a station at `place`: the flyable point nearest its antenna in line of sight.
+  Vec3 stationPoint(const agent::AgentView& view, const Vec3& place) const;
   Vec3 meetingPointNear(const agent::AgentView& view, const Vec3& partner, const Vec3& fallback,
                         bool above) const;
   double lastApproach_ = -1e300;
