@@ -285,6 +285,7 @@ SleiOptions readOptions(const Config& config, SleiVariant variant) {
   o.obliqueViews = config.getBool("slei3d", "oblique_views", o.obliqueViews);
   o.presumeDone = config.getBool("slei3d", "presume_done", o.presumeDone);
   o.approachPartner = config.getBool("slei3d", "approach_partner", o.approachPartner);
+  o.handoutAtBoxEnd = config.getBool("slei3d", "handout_at_box_end", o.handoutAtBoxEnd);
   o.priorityFirst = config.getBool("slei3d", "priority_first", o.priorityFirst);
   o.deadlineBound = config.getBool("slei3d", "deadline_bound", o.deadlineBound);
   o.searchDepth =

@@ -2,7 +2,8 @@
 // explorer done with its box goes on to the next one before its station meeting; without one, it
 // looks for a late station along the station's route; before it is done with a box, it flies
 // over it (the roof pass); it comes back for an inspector's results until its list is done, and
-// not once it is done, inspected or skipped; pushed off its station meeting point, it goes back.
+// not once it is done, inspected or skipped; pushed off its station meeting point, it goes back;
+// with `handout_at_box_end` it hands out nothing before its box is explored.
 #include <gtest/gtest.h>
 
 #include <optional>
@@ -238,6 +239,61 @@ TEST(Slei3dExplorer, PushedOffItsStationMeetingPointItGoesBack) {
 TEST(Slei3dExplorer, AnInspectorDoneWithItsListIsFreeEvenWithAFeatureSkipped) {
   EXPECT_EQ(ordersToInspector(1, 120.0), (std::vector<uint32_t>{1}));
   EXPECT_EQ(ordersToInspector(1, 120.0, true), (std::vector<uint32_t>{1}));
+}
+
+// The time e1 first sends orders to i1 (its one inspector, always in sight) after it found a
+// feature at 2 s, exploring box 0 (meeting at 400 s), and when it ended its roof pass over the
+// box (over its far corner, above 5 m: until then the box is left to explore).
+struct HandoutTiming {
+  double firstOrders = -1.0;
+  double roofPassEnd = -1.0;
+};
+
+HandoutTiming handoutWhileExploring(const Config& config, bool highPriority) {
+  auto explorer = makeExplorer(
+      config, "slei3d",
+      {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}, {"i1", Role::Photographer}});
+  FleetPlan plan;
+  plan.subgroups.push_back({1, {2}, 0, {cornerOf(0), 400.0}, 0});
+  agent::AgentView view = startView();
+  agent::NeighbourInfo inspector{"i1", Role::Photographer, {}};
+  inspector.odometry.position = Vec3(-6, 4, 3);
+  HandoutTiming timing;
+  for (int step = 0; step * 0.1 <= 120.0 && timing.firstOrders < 0.0; ++step) {
+    view.time = step * 0.1;
+    view.messages.clear();
+    if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
+    view.neighbours = {inspector};
+    view.detectedFeatures.clear();
+    if (step == 20)
+      view.detectedFeatures.push_back({7, Vec3(0, 8, 2), -Vec3::UnitY(), 2.0, highPriority});
+    const auto command = explorer->decide(view);
+    if (command.setpoint) view.odometry.position = command.setpoint->position;
+    const Vec3& at = view.odometry.position;
+    if (timing.roofPassEnd < 0.0 && at.z() > 5.0 &&
+        (at.head<2>() - Eigen::Vector2d(2, 12)).norm() < 0.5)
+      timing.roofPassEnd = view.time;  // over the far corner: the roof pass is flown
+    for (const auto& message : command.messages)
+      if (message.to == "i1" && message.topic == kOrdersTopic && timing.firstOrders < 0.0)
+        timing.firstOrders = view.time;
+  }
+  return timing;
+}
+
+// With `handout_at_box_end` the feature found while the box is left to explore waits until the
+// box is explored (the roof pass flown); SOEI alone hands it to the inspector in sight at once,
+// and so does the explorer holding a high-priority feature.
+TEST(Slei3dExplorer, WithHandoutAtBoxEndItHandsOutOnlyOnceItsBoxIsExplored) {
+  const auto soei = handoutWhileExploring(Config::fromText("", "run.ini"), false);
+  const auto config = Config::fromText("[slei3d]\nhandout_at_box_end = true\n", "run.ini");
+  const auto held = handoutWhileExploring(config, false);
+  const auto urgent = handoutWhileExploring(config, true);
+  ASSERT_GT(soei.firstOrders, 0.0);
+  ASSERT_GT(held.firstOrders, 0.0);
+  ASSERT_GT(held.roofPassEnd, 0.0);
+  EXPECT_LT(soei.firstOrders, held.roofPassEnd);
+  EXPECT_GE(held.firstOrders, held.roofPassEnd);
+  EXPECT_LT(urgent.firstOrders, held.roofPassEnd);
 }
 
 }  // namespace

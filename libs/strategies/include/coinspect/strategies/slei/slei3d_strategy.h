@@ -89,6 +89,11 @@ struct SleiOptions {
   // At a hand-out's meeting point without the inspector in link, the explorer flies on towards
   // the inspector's predicted place (`[slei3d] approach_partner`). Off: it waits at the point.
   bool approachPartner = true;
+  // `[slei3d] handout_at_box_end` (not the paper's): while its box is left to explore, an
+  // explorer hands nothing out (SOEI still meets inspectors when the box is explored, when it
+  // announces a new box to them, and for high-priority features): it never breaks off its
+  // exploring, and the inspectors work a box behind it, away from its sweep.
+  bool handoutAtBoxEnd = false;
   // s, longest time to the next station meeting. The reference clamps eq. 9 at 600 s; with the
   // next box reserved an explorer done early no longer waits that long, and the lead only bounds
   // how long its results and the station's plan go unexchanged: 200 s collected 124.7 features
