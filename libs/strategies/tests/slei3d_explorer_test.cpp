@@ -6,7 +6,9 @@
 // with `handout_at_box_end` it hands out nothing before its box is explored.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -294,6 +296,63 @@ TEST(Slei3dExplorer, WithHandoutAtBoxEndItHandsOutOnlyOnceItsBoxIsExplored) {
   EXPECT_LT(soei.firstOrders, held.roofPassEnd);
   EXPECT_GE(held.firstOrders, held.roofPassEnd);
   EXPECT_LT(urgent.firstOrders, held.roofPassEnd);
+}
+
+// The features in each orders e1 sends to i1 and i2 (its two inspectors, always in sight, idle
+// at their wait points) once it found two features 6 m apart and its box is explored. Its first
+// LiDAR sweep walls in the space where the two wait, 4.5 to 8 m up off the box's near side (as
+// the map paints inspectors waiting out of link): SOEI samples no meeting point around them, and
+// the features are split between the two (all of them went to the one free soonest).
+TEST(Slei3dExplorer, WithNoMeetingPointFoundTheFeaturesAreSplitAmongItsInspectors) {
+  auto wall = std::make_shared<std::vector<Eigen::Vector3f>>();
+  for (float x = -12.0f; x <= 12.0f; x += 0.25f)
+    for (float y = -3.0f; y <= 6.5f; y += 0.25f)
+      for (float z = 4.5f; z <= 8.0f; z += 0.25f)
+        wall->emplace_back(x, y, z);
+  auto explorer = makeExplorer(Config::fromText("", "run.ini"), "slei3d",
+                               {{"gcs", Role::GroundStation},
+                                {"e1", Role::Explorer},
+                                {"i1", Role::Photographer},
+                                {"i2", Role::Photographer}});
+  FleetPlan plan;
+  plan.subgroups.push_back({1, {2, 3}, 0, {cornerOf(0), 400.0}, 0});
+  agent::AgentView view = startView();
+  std::map<std::string, std::set<uint32_t>> tasks;
+  std::vector<agent::ReceivedMessage> answers;
+  for (int step = 0; step * 0.1 <= 120.0; ++step) {
+    view.time = step * 0.1;
+    view.messages = std::move(answers);
+    answers.clear();
+    if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
+    view.neighbours.clear();
+    for (const char* name : {"i1", "i2"}) {
+      agent::NeighbourInfo inspector{name, Role::Photographer, {}};
+      inspector.odometry.position = Vec3(name[1] == '1' ? -6 : 6, 4, 3);
+      view.neighbours.push_back(inspector);
+    }
+    if (step == 5) view.lidar = {0.5, view.odometry.position, wall};
+    view.detectedFeatures.clear();
+    if (step == 20) {
+      view.detectedFeatures.push_back({7, Vec3(-3, 8, 2), -Vec3::UnitY(), 2.0});
+      view.detectedFeatures.push_back({8, Vec3(3, 8, 2), -Vec3::UnitY(), 2.0});
+    }
+    const auto command = explorer->decide(view);
+    if (command.setpoint) view.odometry.position = command.setpoint->position;
+    for (const auto& message : command.messages) {
+      if (message.topic != kOrdersTopic) continue;
+      const auto orders = decodeOrders(message.bytes);
+      ASSERT_TRUE(orders);
+      for (const auto& task : orders->tasks)
+        tasks[message.to].insert(task.id);
+      Status status;  // taken: the list still to do
+      status.lastOrders = orders->sequence;
+      status.listLeft = static_cast<uint32_t>(orders->tasks.size());
+      answers.push_back({message.to, kStatusTopic, encode(status), view.time});
+    }
+  }
+  EXPECT_EQ(tasks["i1"].size() + tasks["i2"].size(), 2u);
+  EXPECT_EQ(tasks["i1"].size(), 1u);
+  EXPECT_EQ(tasks["i2"].size(), 1u);
 }
 
 }  // namespace

@@ -28,6 +28,7 @@
 #include "coinspect/planning/coverage.h"
 #include "coinspect/planning/detection_coverage.h"
 #include "coinspect/planning/ground_drive.h"
+#include "coinspect/planning/meeting_allocation.h"
 #include "coinspect/planning/meeting_route.h"
 #include "coinspect/strategies/coinspect/keyframe_relay.h"
 #include "coinspect/strategies/runtime/flight.h"
@@ -351,10 +352,16 @@ class Slei3dStrategy : public agent::Strategy {
   };
   std::vector<Handout> handouts_;  // in the order they are flown
   // All pending features to the inspector free soonest, met where its plan ends (caric-team's
-  // rule, and slei3d's when SOEI finds no meeting point after exploring); none when the
-  // explorer would wait long for it while exploring remains.
+  // rule at its hub); none when the explorer would wait long for it while exploring remains.
   std::vector<Handout> handToFreeSoonest(const agent::AgentView& view,
                                          bool explorationFinished) const;
+  // SOEI found no meeting point and a hand-out is due: each of `plans` (the inspectors
+  // inspectors_[modelOf[i]]) met where its plan ends, free soonest first, the features split
+  // among them by SOEI's allocation.
+  std::vector<Handout> handToEach(const agent::AgentView& view,
+                                  const std::vector<planning::InspectorPlan>& plans,
+                                  const std::vector<planning::PendingFeature>& features,
+                                  const std::vector<size_t>& modelOf) const;
   // No box left and nothing pending: meet each inspector that still has features where its
   // list ends, to carry its results to the station.
   std::vector<Handout> planCollection(const agent::AgentView& view) const;
