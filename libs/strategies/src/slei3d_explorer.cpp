@@ -648,9 +648,10 @@ void Slei3dStrategy::planHandout(const agent::AgentView& view) {
   // `handout_at_box_end`: nothing handed out while the box is left to explore. In-box hand-outs
   // cost slei-a's explorers about a quarter of their time up to 600 s, and their inspectors
   // worked where the explorer swept; held, the 141st feature was found about 150 s sooner.
-  const bool urgent = std::any_of(pending_.begin(), pending_.end(),
-                                  [](const FeatureTask& task) { return task.highPriority; });
-  if (options_.handoutAtBoxEnd && !problem.explorationFinished && !urgent) return;
+  if (options_.handoutAtBoxEnd && !problem.explorationFinished &&
+      std::none_of(pending_.begin(), pending_.end(),
+                   [](const FeatureTask& task) { return task.highPriority; }))
+    return;
   std::vector<Handout> planned;
   if (!problem.features.empty()) {
     planning::MeetingOptions options;
