@@ -542,6 +542,25 @@ std::vector<Slei3dStrategy::Handout> Slei3dStrategy::handToFreeSoonest(
   return {std::move(handout)};
 }
 
+// A mandatory hand-out (the box explored): an inspector around which SOEI sampled no point
+// (the explorer's map paints an inspector waiting out of link, and its neighbourhood with it)
+// gets one candidate, the reachable point nearest where its plan ends. Without it SOEI met only
+// the inspectors it had points for and gave them the whole box: slei-a, scene seed 2, with
+// `handout_at_box_end`, 26 features to `inspector2` (inspected 688 to 800 s) while
+// `inspector1` waited from 433 to 758 s.
+void Slei3dStrategy::addPlanEndPoints(const agent::AgentView& view,
+                                      const std::vector<planning::InspectorPlan>& plans,
+                                      std::vector<planning::InspectorMeetingPoints>* points) const {
+  const Vec3 none = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+  for (size_t i = 0; i < plans.size(); ++i) {
+    auto& perPose = (*points)[i];
+    if (std::any_of(perPose.begin(), perPose.end(), [](const auto& p) { return !p.empty(); }))
+      continue;
+    const Vec3 place = meetingPointNear(view, plans[i].poses.back().position, none, false);
+    if (place.allFinite()) perPose.back() = {place};
+  }
+}
+
 std::vector<Slei3dStrategy::Handout> Slei3dStrategy::handToEach(
     const agent::AgentView& view, const std::vector<planning::InspectorPlan>& plans,
     const std::vector<planning::PendingFeature>& features,
@@ -662,10 +681,13 @@ void Slei3dStrategy::planHandout(const agent::AgentView& view) {
     const planning::MeetingBox box{region.min, region.max};
     const auto space =
         planning::voxelGridMeetingSpace(map_->grid(), flight_->requiredClearance(map_->grid()));
-    const auto decision = planning::decideMeetings(problem, box, space, options);
-    // No sampled meeting point anywhere (the reference would meet at the pose itself; here the
-    // map paints an inspector waiting out of link): each inspector met where its plan ends,
-    // the features split among them. (All of them to the one free soonest left the other
+    auto points = planning::sampleInspectorMeetingPoints(problem.inspectors, view.time, box, space,
+                                                         options.sampling);
+    if (problem.explorationFinished) addPlanEndPoints(view, problem.inspectors, &points);
+    const auto decision = planning::decideMeetings(problem, points, options);
+    // No feasible candidate even so (no point near an inspector's plan end either, or every
+    // route misses a window): each inspector met where its plan ends, the features split
+    // among them. (All of them to the one free soonest left the other
     // idle: slei-a, scene seed 3, with handout_at_box_end, 38 features to one inspector,
     // inspected from 653 to 852 s, while its partner idled from 468 s.)
     if (decision.choice == planning::MeetingChoice::NoFeasibleMeeting &&

@@ -355,6 +355,11 @@ class Slei3dStrategy : public agent::Strategy {
   // rule at its hub); none when the explorer would wait long for it while exploring remains.
   std::vector<Handout> handToFreeSoonest(const agent::AgentView& view,
                                          bool explorationFinished) const;
+  // SOEI's candidates of a mandatory hand-out: the point near where its plan ends for an
+  // inspector with none sampled (points[i] for plans[i]).
+  void addPlanEndPoints(const agent::AgentView& view,
+                        const std::vector<planning::InspectorPlan>& plans,
+                        std::vector<planning::InspectorMeetingPoints>* points) const;
   // SOEI found no meeting point and a hand-out is due: each of `plans` (the inspectors
   // inspectors_[modelOf[i]]) met where its plan ends, free soonest first, the features split
   // among them by SOEI's allocation.
