@@ -542,12 +542,12 @@ std::vector<Slei3dStrategy::Handout> Slei3dStrategy::handToFreeSoonest(
   return {std::move(handout)};
 }
 
-// A mandatory hand-out (the box explored): an inspector around which SOEI sampled no point
-// (the explorer's map paints an inspector waiting out of link, and its neighbourhood with it)
-// gets one candidate, the reachable point nearest where its plan ends. Without it SOEI met only
-// the inspectors it had points for and gave them the whole box: slei-a, scene seed 2, with
-// `handout_at_box_end`, 26 features to `inspector2` (inspected 688 to 800 s) while
-// `inspector1` waited from 433 to 758 s.
+// A mandatory hand-out (the box explored, or a new box to announce): an inspector around which SOEI
+// sampled no point (the explorer's map paints an inspector waiting out of link, and its
+// neighbourhood with it) gets one candidate, the reachable point nearest where its plan ends.
+// Without it SOEI met only the inspectors it had points for and gave them the whole box: slei-a,
+// scene seed 2, with `handout_at_box_end`, 26 features to `inspector2` (inspected 688 to 800 s)
+// while `inspector1` waited from 433 to 758 s.
 void Slei3dStrategy::addPlanEndPoints(const agent::AgentView& view,
                                       const std::vector<planning::InspectorPlan>& plans,
                                       std::vector<planning::InspectorMeetingPoints>* points) const {
