@@ -687,9 +687,9 @@ void Slei3dStrategy::planHandout(const agent::AgentView& view) {
     const auto decision = planning::decideMeetings(problem, points, options);
     // No feasible candidate even so (no point near an inspector's plan end either, or every
     // route misses a window): each inspector met where its plan ends, the features split
-    // among them. (All of them to the one free soonest left the other
-    // idle: slei-a, scene seed 3, with handout_at_box_end, 38 features to one inspector,
-    // inspected from 653 to 852 s, while its partner idled from 468 s.)
+    // among them. (All of them to the one free soonest left the other idle: slei-a, scene
+    // seed 3, with handout_at_box_end, 38 features to one inspector, inspected from 653 to
+    // 852 s, while its partner idled from 468 s.)
     if (decision.choice == planning::MeetingChoice::NoFeasibleMeeting &&
         problem.explorationFinished)
       planned = handToEach(view, problem.inspectors, problem.features, modelOf);
