@@ -40,6 +40,9 @@ constexpr double kSettle = 2.0;             // s an inspector needs at a pose be
 constexpr double kInspectionTime = 3.0;     // s, t_q ([features] inspect_time's default)
 constexpr double kHubReach = 10.0;          // m from caric-team's hub where it hands out
 constexpr double kPoseTravel = 5.0;         // s between two poses of a list, a rough guess
+// s past a station meeting an explorer with no box left may still be collecting results: half
+// the station's patience (six graces of 10 s, slei3d_station.cpp).
+constexpr double kCollectOverrun = 30.0;
 constexpr double kNoMeeting = 1e299;
 constexpr double kCharged = 0.99;         // battery level at which it stops charging
 constexpr double kChargePatience = 20.0;  // s without the level rising: no charger in reach
@@ -879,9 +882,23 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
     }
   }
   // Time to leave for the station? Planned hand-outs wait: their features go back to pending.
+  // With no box left and nothing to hand out, it goes on collecting its inspectors' results
+  // (planCollection) up to kCollectOverrun past the meeting: they are what the station waits
+  // for, and it gives an explorer up only long after its meeting. (Left for every meeting,
+  // slei-a, scene seed 2: `explorer2`, without a box from 1008 s, met the station nine times
+  // and never came for its inspectors' last 5 results, which their stale lists put after each
+  // next meeting.)
+  const bool collecting = box_ < 0 && pending_.empty() &&
+                          (phase_ == ExplorerPhase::ToInspector || phase_ == ExplorerPhase::Done) &&
+                          std::any_of(inspectors_.begin(), inspectors_.end(),
+                                      [&](const InspectorModel& m) {
+                                        return !m.tasks.empty() && m.lostUntil <= view.time;
+                                      }) &&
+                          view.time + straightTime(here, meetingPlace, options_.speed) <
+                              stationMeeting_.time + kCollectOverrun;
   const bool busyAway = phase_ == ExplorerPhase::ToBox || phase_ == ExplorerPhase::Exploring ||
                         phase_ == ExplorerPhase::ToInspector || phase_ == ExplorerPhase::Done;
-  if (busyAway && stationMeeting_.time < kNoMeeting &&
+  if (busyAway && !collecting && stationMeeting_.time < kNoMeeting &&
       view.time + straightTime(here, meetingPlace, options_.speed) + kLeaveMargin >=
           stationMeeting_.time) {
     for (const auto& handout : handouts_)

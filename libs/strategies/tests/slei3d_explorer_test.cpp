@@ -2,8 +2,9 @@
 // explorer done with its box goes on to the next one before its station meeting; without one, it
 // looks for a late station along the station's route; before it is done with a box, it flies
 // over it (the roof pass); it comes back for an inspector's results until its list is done, and
-// not once it is done, inspected or skipped; pushed off its station meeting point, it goes back;
-// with `handout_at_box_end` it hands out nothing before its box is explored.
+// not once it is done, inspected or skipped, and with no box left not even for its station
+// meeting; pushed off its station meeting point, it goes back; with `handout_at_box_end` it
+// hands out nothing before its box is explored.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -143,8 +144,16 @@ TEST(Slei3dExplorer, BeforeItsBoxIsDoneItFliesOverItCornerToCorner) {
 // with no box left, it hands out one feature and then comes to take i1's results. i1 answers
 // every new orders with its status, and says it again every second (as an inspector does while
 // its explorer is near): the feature still on its list, or from orders number `doneFrom` on,
-// its list done, the feature inspected (or, `skipped`, not).
-std::vector<uint32_t> ordersToInspector(uint32_t doneFrom, double until, bool skipped = false) {
+// its list done, the feature inspected (or, `skipped`, not). With `meeting`, the reply names it
+// as the next station meeting, and as the station's one stop; by default there is none.
+struct Collection {
+  std::vector<uint32_t> sent;  // sequence numbers
+  double lastOrdersAt = -1.0;  // s, when e1 last sent orders
+  Vec3 at = Vec3::Zero();      // where e1 is at `until`
+};
+
+Collection handOutAndCollect(uint32_t doneFrom, double until, bool skipped = false,
+                             std::optional<Meeting> meeting = std::nullopt) {
   auto explorer = makeExplorer(
       Config::fromText("", "run.ini"), "caric-team",
       {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}, {"i1", Role::Photographer}});
@@ -154,10 +163,15 @@ std::vector<uint32_t> ordersToInspector(uint32_t doneFrom, double until, bool sk
   reply.meetingNumber = 1;
   reply.box = -1;
   reply.next = {cornerOf(0), 1e300};
+  if (meeting) {
+    reply.next = *meeting;
+    reply.stops = {*meeting};
+  }
   agent::AgentView view = startView();
   agent::NeighbourInfo inspector{"i1", Role::Photographer, {}};
   inspector.odometry.position = Vec3(-6, 4, 3);
-  std::vector<uint32_t> sent;
+  Collection run;
+  auto& sent = run.sent;
   std::vector<agent::ReceivedMessage> answers;
   std::optional<Status> said;
   for (int step = 0; step * 0.1 <= until; ++step) {
@@ -175,6 +189,7 @@ std::vector<uint32_t> ordersToInspector(uint32_t doneFrom, double until, bool sk
     if (command.setpoint) view.odometry.position = command.setpoint->position;
     for (const auto& message : command.messages) {
       if (message.to != "i1" || message.topic != kOrdersTopic) continue;
+      run.lastOrdersAt = view.time;
       const auto orders = decodeOrders(message.bytes);
       if (!orders || (!sent.empty() && sent.back() == orders->sequence)) continue;
       sent.push_back(orders->sequence);
@@ -187,7 +202,12 @@ std::vector<uint32_t> ordersToInspector(uint32_t doneFrom, double until, bool sk
       said = status;
     }
   }
-  return sent;
+  run.at = view.odometry.position;
+  return run;
+}
+
+std::vector<uint32_t> ordersToInspector(uint32_t doneFrom, double until, bool skipped = false) {
+  return handOutAndCollect(doneFrom, until, skipped).sent;
 }
 
 // An inspector met for its results while still at its list is met again (its last results
@@ -199,6 +219,17 @@ TEST(Slei3dExplorer, ItComesBackForTheResultsOfAnInspectorStillAtItsList) {
   EXPECT_EQ(late[2], 3u);
   // Done by the first collection: the hand-out and that one.
   EXPECT_EQ(ordersToInspector(2, 120.0), (std::vector<uint32_t>{1, 2}));
+}
+
+// With no box left, e1 goes on collecting i1's results (i1 never done) past the time to leave
+// for its station meeting at 60 s, 40 m away at box 1's corner, until 30 s past it less the
+// flight there (about 70 s); then it flies there. Before, it left at about 30 s and never came
+// back for them (slei-a: 5 inspected results that never reached the station).
+TEST(Slei3dExplorer, WithNoBoxLeftItCollectsPastTheTimeToLeaveForItsMeeting) {
+  const auto run = handOutAndCollect(1000, 130.0, false, Meeting{cornerOf(1), 60.0});
+  EXPECT_GT(run.lastOrdersAt, 60.0);
+  EXPECT_LT(run.lastOrdersAt, 75.0);
+  EXPECT_LT((run.at - cornerOf(1)).head<2>().norm(), 5.0);
 }
 
 // e1 (its box explored at once: nothing is scanned) waits at its point for the station's meeting
