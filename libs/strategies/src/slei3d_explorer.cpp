@@ -612,7 +612,7 @@ std::vector<Slei3dStrategy::Handout> Slei3dStrategy::planCollection(
   std::vector<Handout> planned;
   for (size_t k = 0; k < inspectors_.size(); ++k) {
     const auto& model = inspectors_[k];
-    if (model.tasks.empty() || model.lostUntil > view.time) continue;
+    if (!model.toCollect(view.time)) continue;
     const auto plan = predictedPlan(model, view.time);
     Handout handout;
     handout.inspector = k;
@@ -888,14 +888,13 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
   // slei-a, scene seed 2: `explorer2`, without a box from 1008 s, met the station nine times
   // and never came for its inspectors' last 5 results, which their stale lists put after each
   // next meeting.)
-  const bool collecting = box_ < 0 && pending_.empty() &&
-                          (phase_ == ExplorerPhase::ToInspector || phase_ == ExplorerPhase::Done) &&
-                          std::any_of(inspectors_.begin(), inspectors_.end(),
-                                      [&](const InspectorModel& m) {
-                                        return !m.tasks.empty() && m.lostUntil <= view.time;
-                                      }) &&
-                          view.time + straightTime(here, meetingPlace, options_.speed) <
-                              stationMeeting_.time + kCollectOverrun;
+  const bool collecting =
+      box_ < 0 && pending_.empty() &&
+      (phase_ == ExplorerPhase::ToInspector || phase_ == ExplorerPhase::Done) &&
+      std::any_of(inspectors_.begin(), inspectors_.end(),
+                  [&](const InspectorModel& m) { return m.toCollect(view.time); }) &&
+      view.time + straightTime(here, meetingPlace, options_.speed) <
+          stationMeeting_.time + kCollectOverrun;
   const bool busyAway = phase_ == ExplorerPhase::ToBox || phase_ == ExplorerPhase::Exploring ||
                         phase_ == ExplorerPhase::ToInspector || phase_ == ExplorerPhase::Done;
   if (busyAway && !collecting && stationMeeting_.time < kNoMeeting &&

@@ -342,10 +342,9 @@ Cloud pointsIn(const Eigen::Vector3f& from, const Eigen::Vector3f& to) {
 }
 
 // The features in each orders e1 sends to its two inspectors i1 and i2 once it found
-// `features` (at 2 s; by default two, 6 m apart) and its box is explored. The two stay in sight (at
-// (-6, 4, 3) and (6, 4, 3)), idle; e1 plans to meet them at their first wait points, (-7.9, 5.6, 6)
-// and
-// (-4.4, 2.1, 6). One LiDAR sweep at 0.5 s maps `scan` from the start.
+// `features` (at 2 s; by default two, 6 m apart) and its box is explored. The two stay in sight
+// (at (-6, 4, 3) and (6, 4, 3)), idle; e1 plans to meet them at their first wait points,
+// (-7.9, 5.6, 6) and (-4.4, 2.1, 6). One LiDAR sweep at 0.5 s maps `scan` from the start.
 std::map<std::string, std::set<uint32_t>> handOutAfter(
     const Cloud& scan, const std::vector<Vec3>& features = {Vec3(-3, 8, 2), Vec3(3, 8, 2)},
     const char* config = "") {

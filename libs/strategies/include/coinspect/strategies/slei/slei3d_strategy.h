@@ -336,6 +336,9 @@ class Slei3dStrategy : public agent::Strategy {
     double lostUntil = 0.0;      // not looked for before this time
     double heard = 0.0;          // its last status
     uint32_t listLeft = 0;       // features on its list by its last status
+    // Results to collect from it: features given and not yet known inspected, and it is looked
+    // for at `now`.
+    bool toCollect(double now) const { return !tasks.empty() && lostUntil <= now; }
   };
   std::vector<InspectorModel> inspectors_;
   // A planned meeting with an inspector (SOEI): where, when, and its orders.
