@@ -69,7 +69,7 @@ CompletionPrediction unclampedCompletion(const CompletionInputs& in,
   const double scanned = in.featuresScanned;
   const double predicted = std::floor(scanned * in.boxVolume / in.exploredVolume);
   const double t = in.timeInBox;
-  if (in.featuresScanned == 0 || scanned >= predicted) {
+  if (in.featuresScanned == 0 || scanned >= predicted || in.inspectedAfterExploration) {
     prediction.unclamped = in.boxVolume / in.exploredVolume * t - t;
     prediction.rule = CompletionRule::VolumeExtrapolation;
   } else if (in.featuresInspected == 0) {

@@ -98,6 +98,16 @@ TEST(SleiCompletion, FeaturesToFindExtrapolatesTheInspections) {
   EXPECT_DOUBLE_EQ(p.remaining, 180.0);
 }
 
+TEST(SleiCompletion, FeaturesInspectedOnlyAfterTheBoxExtrapolateTheVolume) {
+  // As in the fallback's case (20 predicted, 10 scanned, none inspected), but the features wait
+  // for the box's end: half explored in 60 s, the other half takes 60 s.
+  CompletionInputs in = exploring(1000.0, 500.0, 10, 0, 60.0);
+  in.inspectedAfterExploration = true;
+  const CompletionPrediction p = predictCompletion(in);
+  EXPECT_EQ(p.rule, CompletionRule::VolumeExtrapolation);
+  EXPECT_DOUBLE_EQ(p.remaining, 60.0);
+}
+
 TEST(SleiCompletion, PredictedCountOfAnExactRatioDoesNotRoundDown) {
   // (1 / 49) * 98 is 1.999... in doubles; 1 * 98 / 49 is exactly 2, so one feature is still to
   // find (the volume rule would give 98 / 49 * 60 - 60 = 60 s).

@@ -37,6 +37,10 @@ struct CompletionInputs {
   // s, the flying time of the sweep it has planned (0: none); read when nothing is explored
   // yet, where eq. 9 has nothing to extrapolate from.
   double plannedSweepTime = 0.0;
+  // The box's features are handed out only once it is explored (`handout_at_box_end`): none is
+  // inspected while it is explored, so the box is done when it is explored, and the inspections
+  // give no rate to extrapolate.
+  bool inspectedAfterExploration = false;
   bool explorationFinished = false;
   // Only read when explorationFinished:
   double earliestInspectorFinish = 0.0;  // s, absolute: the soonest planned end of an inspector
@@ -66,8 +70,9 @@ struct CompletionPrediction {
 //   V_e = 0 (NothingExplored): T = minRemaining (the reference's literal 50 s).
 //   otherwise N_pred = floor(N_s V_b / V_e), the features the box holds at the density seen so
 //   far (computed as one quotient, not rho * V_b, so that exact ratios do not round down), and
-//     N_s = 0 or N_s >= N_pred (VolumeExtrapolation): T = (V_b / V_e) t_e - t_e; the rest of the
-//       box takes as long per cubic metre as the part explored;
+//     N_s = 0, N_s >= N_pred or inspectedAfterExploration (VolumeExtrapolation):
+//       T = (V_b / V_e) t_e - t_e; the rest of the box takes as long per cubic metre as the part
+//       explored;
 //     N_r = 0 (UninspectedFallback): T = uninspectedFallback;
 //     else (InspectionExtrapolation): T = (N_pred / N_r) t_e - t_e; inspections go on at the
 //       rate seen so far until all predicted features are done.
