@@ -502,8 +502,8 @@ double Slei3dStrategy::predictRemaining(const agent::AgentView& view) const {
   in.featuresScanned = static_cast<int>(scannedInBox_);
   in.featuresInspected = static_cast<int>(inspectedInBox_);
   // Held to the box's end, its features are not inspected while it is explored: the fallback
-  // for "none inspected yet" (100 s) set every meeting. slei-a, scene seeds 1-3: 94 % at 903,
-  // 799, 764 s against 1009, 848, 790 s.
+  // for "none inspected yet" (100 s) set nearly every meeting. slei-a, scene seeds 1-3: 94 % at
+  // 903, 799, 764 s against 1009, 848, 790 s.
   in.inspectedAfterExploration = options_.handoutAtBoxEnd;
   in.timeInBox = std::max(0.0, view.time - boxStart_);
   in.explorationFinished = explorationFinished_;
@@ -892,18 +892,17 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
   // slei-a, scene seed 2: `explorer2`, without a box from 1008 s, met the station nine times
   // and never came for its inspectors' last 5 results, which their stale lists put after each
   // next meeting.)
+  const double atMeeting = view.time + straightTime(here, meetingPlace, options_.speed);
   const bool collecting =
       box_ < 0 && pending_.empty() &&
       (phase_ == ExplorerPhase::ToInspector || phase_ == ExplorerPhase::Done) &&
       std::any_of(inspectors_.begin(), inspectors_.end(),
                   [&](const InspectorModel& m) { return m.toCollect(view.time); }) &&
-      view.time + straightTime(here, meetingPlace, options_.speed) <
-          stationMeeting_.time + kCollectOverrun;
+      atMeeting < stationMeeting_.time + kCollectOverrun;
   const bool busyAway = phase_ == ExplorerPhase::ToBox || phase_ == ExplorerPhase::Exploring ||
                         phase_ == ExplorerPhase::ToInspector || phase_ == ExplorerPhase::Done;
   if (busyAway && !collecting && stationMeeting_.time < kNoMeeting &&
-      view.time + straightTime(here, meetingPlace, options_.speed) + kLeaveMargin >=
-          stationMeeting_.time) {
+      atMeeting + kLeaveMargin >= stationMeeting_.time) {
     for (const auto& handout : handouts_)
       pending_.insert(pending_.begin(), handout.orders.tasks.begin(), handout.orders.tasks.end());
     handouts_.clear();
