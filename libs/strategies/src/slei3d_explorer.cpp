@@ -17,9 +17,10 @@ namespace coinspect::strategies::slei {
 
 namespace {
 
-constexpr double kReplanPeriod = 15.0;      // s between sweep plans (the map grows meanwhile)
-constexpr double kStationAntenna = 0.5;     // m above the ground, a station's link end
-constexpr double kApproachReach = 4.5;      // m: within the 5 m link with a margin
+constexpr double kReplanPeriod = 15.0;   // s between sweep plans (the map grows meanwhile)
+constexpr double kStationAntenna = 0.5;  // m above the ground, a station's link end
+constexpr double kApproachReach = 4.5;   // m: within the 5 m link with a margin
+constexpr double kHubSlot = 3.0;  // m from a static station where each of its explorers meets it
 constexpr double kApproachRetry = 3.0;      // s between approaches after a failed flight
 constexpr double kReaimPeriod = 5.0;        // s between checks of a station meeting point ...
 constexpr double kReaimOffset = 1.0;        // m ... left by more than this: flown to again
@@ -399,12 +400,14 @@ std::optional<Vec3> Slei3dStrategy::earlyStop(const agent::AgentView& view, doub
 // station, beyond the 5 m link; a wait point in unmapped space has no path); `fallback` when the
 // map offers nothing within the link's reach. Only points at or above the partner when `above`.
 Vec3 Slei3dStrategy::meetingPointNear(const agent::AgentView& view, const Vec3& partner,
-                                      const Vec3& fallback, bool above) const {
+                                      const Vec3& fallback, bool above,
+                                      const std::optional<Vec3>& toward) const {
   const auto& grid = map_->grid();
   const auto reachable =
       planning::reachableCells(grid, view.odometry.position, flight_->searchOptions(grid));
   Vec3 best = fallback;
-  double bestDistance = kApproachReach;
+  const Vec3 aim = toward.value_or(partner);
+  double bestDistance = std::numeric_limits<double>::infinity();
   const double step = grid.resolution();
   const int r = static_cast<int>(std::ceil(kApproachReach / step));
   const auto centre = grid.cellOf(partner);
@@ -414,7 +417,8 @@ Vec3 Slei3dStrategy::meetingPointNear(const agent::AgentView& view, const Vec3& 
         const mapping::Index3 cell = centre + mapping::Index3(dx, dy, dz);
         if (!grid.contains(cell) || !reachable[grid.linear(cell)]) continue;
         const Vec3 p = grid.centre(cell);
-        const double d = (p - partner).norm();
+        if ((p - partner).norm() >= kApproachReach) continue;
+        const double d = (p - aim).norm();
         if (d < bestDistance && planning::lineOfSight(grid, p, partner, false))
           bestDistance = d, best = p;
       }
@@ -423,8 +427,23 @@ Vec3 Slei3dStrategy::meetingPointNear(const agent::AgentView& view, const Vec3& 
 
 Vec3 Slei3dStrategy::stationPoint(const agent::AgentView& view, const Vec3& place) const {
   const Vec3 station(place.x(), place.y(), groundZ_ + kStationAntenna);
-  return meetingPointNear(view, station, Vec3(place.x(), place.y(), groundZ_ + options_.meetHeight),
-                          true);
+  const Vec3 above(place.x(), place.y(), groundZ_ + options_.meetHeight);
+  const auto* own = subgroupOf(static_cast<uint32_t>(unit_.self));
+  if (!staticStation() || !own) return meetingPointNear(view, station, above, true);
+  // Every explorer of a static station meets it at the one place: each comes from its own side,
+  // kHubSlot out (the explorers in the plan's order around the circle). At one point the
+  // lower-priority one backed off to the flight's 4 m separation from the other, out of the
+  // link (caric-team on slei-a, scene seed 3: explorer2 hovered 7 m from the station for 143 s
+  // while explorer1 waited on the point).
+  size_t slot = 0, count = 0;
+  for (const auto& s : plan_->subgroups) {
+    if (s.station != own->station) continue;
+    if (s.explorer == own->explorer) slot = count;
+    ++count;
+  }
+  const double angle = 2.0 * M_PI * static_cast<double>(slot) / static_cast<double>(count);
+  const Vec3 side = above + kHubSlot * Vec3(std::cos(angle), std::sin(angle), 0.0);
+  return meetingPointNear(view, station, side, true, side);
 }
 
 void Slei3dStrategy::goToStation(const agent::AgentView& view, const Vec3& place) {
@@ -527,26 +546,57 @@ double Slei3dStrategy::predictRemaining(const agent::AgentView& view) const {
 
 std::vector<Slei3dStrategy::Handout> Slei3dStrategy::handToFreeSoonest(
     const agent::AgentView& view, bool explorationFinished) const {
-  std::optional<size_t> first;
-  planning::InspectorPlan firstPlan;
-  for (size_t k = 0; k < inspectors_.size(); ++k) {
-    if (inspectors_[k].lostUntil > view.time) continue;
-    auto plan = predictedPlan(inspectors_[k], view.time);
-    if (!first || plan.poses.back().start < firstPlan.poses.back().start)
-      first = k, firstPlan = std::move(plan);
+  if (pending_.empty()) return {};
+  std::vector<std::pair<size_t, planning::InspectorPlan>> free;  // model, predicted plan
+  for (size_t k = 0; k < inspectors_.size(); ++k)
+    if (inspectors_[k].lostUntil <= view.time)
+      free.emplace_back(k, predictedPlan(inspectors_[k], view.time));
+  if (free.empty()) return {};
+  const auto freeAt = [](const auto& f) { return f.second.poses.back().start; };
+  std::stable_sort(free.begin(), free.end(),
+                   [&](const auto& a, const auto& b) { return freeAt(a) < freeAt(b); });
+  const double soonest = freeAt(free.front());
+  // Those free within the wait bound of the first share the batch; the others are busy.
+  free.erase(std::remove_if(free.begin(), free.end(),
+                            [&](const auto& f) { return freeAt(f) > soonest + kMaxHandoutWait; }),
+             free.end());
+  if (free.size() > pending_.size()) free.resize(pending_.size());
+  // The features in a nearest-neighbour tour from the explorer, cut into one run of consecutive
+  // features per inspector (no optimisation of anyone's idle time). All of them to the one free
+  // soonest, with returns 300 s apart, left slei-a's other inspector idle: 0 to 3 features
+  // collected in 1200 s.
+  std::vector<FeatureTask> tour;
+  std::vector<FeatureTask> left = pending_;
+  Vec3 at = view.odometry.position;
+  while (!left.empty()) {
+    const auto next = std::min_element(left.begin(), left.end(), [&](const auto& a, const auto& b) {
+      return (a.position - at).squaredNorm() < (b.position - at).squaredNorm();
+    });
+    at = next->position;
+    tour.push_back(*next);
+    left.erase(next);
   }
-  if (!first || pending_.empty()) return {};
-  Handout handout;
-  handout.inspector = *first;
-  const Vec3 end = firstPlan.poses.back().position;
-  handout.place = meetingPointNear(view, end, end, false);
-  handout.time = firstPlan.poses.back().start;
-  const double arrival =
-      view.time + straightTime(view.odometry.position, handout.place, options_.speed);
-  if (!explorationFinished && handout.time - arrival > kMaxHandoutWait) return {};
-  handout.time = std::max(handout.time, arrival);  // given up a grace after it
-  handout.orders.tasks = pending_;
-  return {std::move(handout)};
+  std::vector<Handout> planned;
+  Vec3 from = view.odometry.position;
+  double clock = view.time;
+  size_t taken = 0;
+  for (size_t i = 0; i < free.size(); ++i) {
+    const auto& end = free[i].second.poses.back();
+    Handout handout;
+    handout.inspector = free[i].first;
+    handout.place = meetingPointNear(view, end.position, end.position, false);
+    const double arrival = clock + straightTime(from, handout.place, options_.speed);
+    if (i == 0 && !explorationFinished && end.start - arrival > kMaxHandoutWait) return {};
+    handout.time = std::max(end.start, arrival);  // given up a grace after it
+    clock = handout.time;
+    from = handout.place;
+    const size_t share = (tour.size() - taken) / (free.size() - i);
+    handout.orders.tasks.assign(tour.begin() + static_cast<std::ptrdiff_t>(taken),
+                                tour.begin() + static_cast<std::ptrdiff_t>(taken + share));
+    taken += share;
+    planned.push_back(std::move(handout));
+  }
+  return planned;
 }
 
 // A mandatory hand-out (the box explored, or a new box to announce): an inspector around which SOEI
@@ -642,7 +692,13 @@ void Slei3dStrategy::planHandout(const agent::AgentView& view) {
   if (options_.variant == SleiVariant::ExploreFirst && box_ >= 0) return;
   // Nothing left to explore nor to hand out: the inspectors' results are still to be carried
   // to the station (the last features of a run were inspected and never collected).
-  if (box_ < 0 && pending_.empty()) return startHandouts(planCollection(view));
+  // Not caric-team's: its inspectors bring their results to the hub themselves, and its
+  // explorer waiting at the hub for them stood in the others' way (slei-a, scene seed 3:
+  // explorer2 held 4.5 m from explorer1 for 206 s, out of the station's link).
+  if (box_ < 0 && pending_.empty()) {
+    if (options_.variant != SleiVariant::Team) startHandouts(planCollection(view));
+    return;
+  }
   if (options_.variant == SleiVariant::Team) {
     // caric-team hands out at the hub, on its returns to the station (and once its boxes are
     // done): flying back for every feature found kept it from exploring.
@@ -876,8 +932,15 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
     nextBox_ = -1;
     enterBox(view, next);
   }
-  if (boxDone && (phase_ == ExplorerPhase::Exploring || phase_ == ExplorerPhase::Done) &&
-      !earlyPlace_ && !earlyTried_) {
+  // caric-team hands out only at its hub: with its last box explored it goes there with what it
+  // holds rather than wait for its meeting (at the 300 s returns, slei-c's explorers waited up
+  // to 110 s so). At the hub it hands out first (planHandout), then reports the box done.
+  const bool teamBoxEnd = options_.variant == SleiVariant::Team && box_ >= 0 &&
+                          explorationFinished_ && handouts_.empty() && nextBox_ < 0 &&
+                          (here - subgroup->firstMeeting.place).norm() > kHubReach;
+  if ((boxDone || teamBoxEnd) &&
+      (phase_ == ExplorerPhase::Exploring || phase_ == ExplorerPhase::Done) && !earlyPlace_ &&
+      !earlyTried_) {
     earlyTried_ = true;  // once per reply: the schedule it knows grows stale
     earlyPlace_ = earlyStop(view, &earlyBy_, &earlyStop_);
     if (earlyPlace_) {
@@ -1088,6 +1151,12 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
       break;
     }
     case ExplorerPhase::Done:
+      // At a static station's hub it waits at its own side of the station, not where it last
+      // handed out, on the inspectors' circle and in the others' way.
+      if (staticStation()) {
+        if (!hubSlot_) hubSlot_ = stationPoint(view, stationMeeting_.place);
+        flight_->goTo(*hubSlot_, options_.speed);
+      }
       command.activity = agent::Activity::Waiting;
       break;
   }

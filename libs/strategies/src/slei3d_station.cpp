@@ -189,7 +189,7 @@ void Slei3dStrategy::answerReports(const agent::AgentView& view, agent::AgentCom
             drive_->ground().nearestReachable(here.head<2>(), place.head<2>());
         place = Vec3(reach.x(), reach.y(), here.z());
       }
-      if (staticStation()) place = staticPlace_, lead = options_.fixInterval;
+      if (staticStation()) place = staticPlace_, lead = returnInterval();
       // [energy] (the paper's eq. 15): the explorer charges first, the station waiting for it,
       // and must be back before its battery falls to 20 %: the meeting moves by the charging
       // time and comes no later than the charge allows.
@@ -358,7 +358,7 @@ agent::AgentCommand Slei3dStrategy::decideStation(const agent::AgentView& view) 
     staticPlace_ = here;
     if (staticStation())
       for (auto& s : plan_->subgroups)
-        s.firstMeeting = {staticPlace_, view.time + options_.fixInterval};
+        s.firstMeeting = {staticPlace_, view.time + returnInterval()};
     // [energy]: the first meeting too before a full battery is down to 20 % (the station does
     // not know the explorers' levels before their first report: full, it assumes).
     for (auto& s : plan_->subgroups) {

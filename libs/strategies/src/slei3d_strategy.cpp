@@ -270,6 +270,7 @@ SleiOptions readOptions(const Config& config, SleiVariant variant) {
   o.inspectPatience = number("inspect_patience", o.inspectPatience, 0.0, 600.0);
   o.maxMeetingLead = number("max_meeting_lead", o.maxMeetingLead, 50.0, 3600.0);
   o.fixInterval = number("fix_interval", o.fixInterval, 10.0, 3600.0);
+  o.teamInterval = number("team_interval", o.teamInterval, 10.0, 3600.0);
   o.plan.evenSplit = config.getBool("slei3d", "even_split", o.plan.evenSplit);
   o.reserveNextBox = config.getBool("slei3d", "reserve_next_box", o.reserveNextBox);
   // explore-then-inspect hands out only once no box is left for an explorer: one that waited

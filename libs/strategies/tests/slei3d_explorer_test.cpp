@@ -4,7 +4,9 @@
 // over it (the roof pass); it comes back for an inspector's results until its list is done, and
 // not once it is done, inspected or skipped, and with no box left not even for its station
 // meeting; pushed off its station meeting point, it goes back; with `handout_at_box_end` it
-// hands out nothing before its box is explored.
+// hands out nothing before its box is explored; caric-team's explorer splits its features among
+// its free inspectors at the hub, comes back there once its last box is explored, and waits on
+// its own side of the station.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -140,8 +142,8 @@ TEST(Slei3dExplorer, BeforeItsBoxIsDoneItFliesOverItCornerToCorner) {
   EXPECT_LT(none.highest, 3.5);
 }
 
-// The sequence numbers of the orders e1 sends i1 (its one inspector, always in sight) while,
-// with no box left, it hands out one feature and then comes to take i1's results. i1 answers
+// The sequence numbers of the orders e1 (slei3d) sends i1 (its one inspector, always in sight)
+// while, with no box left, it hands out one feature and then comes to take i1's results. i1 answers
 // every new orders with its status, and says it again every second (as an inspector does while
 // its explorer is near): the feature still on its list, or from orders number `doneFrom` on,
 // its list done, the feature inspected (or, `skipped`, not). With `meeting`, the reply names it
@@ -155,7 +157,7 @@ struct Collection {
 Collection handOutAndCollect(uint32_t doneFrom, double until, bool skipped = false,
                              std::optional<Meeting> meeting = std::nullopt) {
   auto explorer = makeExplorer(
-      Config::fromText("", "run.ini"), "caric-team",
+      Config::fromText("", "run.ini"), "slei3d",
       {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}, {"i1", Role::Photographer}});
   FleetPlan plan;
   plan.subgroups.push_back({1, {2}, 0, {cornerOf(0), 400.0}, 0});
@@ -222,13 +224,14 @@ TEST(Slei3dExplorer, ItComesBackForTheResultsOfAnInspectorStillAtItsList) {
 }
 
 // With no box left, e1 goes on collecting i1's results (i1 never done) past the time to leave
-// for its station meeting at 60 s, 40 m away at box 1's corner, until 30 s past it less the
-// flight there (about 70 s); then it flies there. Before, it left at about 30 s and never came
-// back for them (slei-a: 5 inspected results that never reached the station).
+// for its station meeting at 60 s at box 1's corner (about 33 s of flight from where it meets
+// i1, so about 27 s), until 30 s past the meeting less the flight there (about 57 s); then it
+// flies there. Before, it left at the time to leave and never came back for them (slei-a: 5
+// inspected results that never reached the station).
 TEST(Slei3dExplorer, WithNoBoxLeftItCollectsPastTheTimeToLeaveForItsMeeting) {
   const auto run = handOutAndCollect(1000, 130.0, false, Meeting{cornerOf(1), 60.0});
-  EXPECT_GT(run.lastOrdersAt, 60.0);
-  EXPECT_LT(run.lastOrdersAt, 75.0);
+  EXPECT_GT(run.lastOrdersAt, 50.0);
+  EXPECT_LT(run.lastOrdersAt, 60.0);
   EXPECT_LT((run.at - cornerOf(1)).head<2>().norm(), 5.0);
 }
 
@@ -272,6 +275,71 @@ TEST(Slei3dExplorer, PushedOffItsStationMeetingPointItGoesBack) {
 TEST(Slei3dExplorer, AnInspectorDoneWithItsListIsFreeEvenWithAFeatureSkipped) {
   EXPECT_EQ(ordersToInspector(1, 120.0), (std::vector<uint32_t>{1}));
   EXPECT_EQ(ordersToInspector(1, 120.0, true), (std::vector<uint32_t>{1}));
+}
+
+// caric-team hands out only at its hub (its first meeting place, box 0's corner): with box 1
+// explored (at once: nothing is scanned) and a feature found on the way, it flies back there
+// long before its meeting at 400 s. (It waited at the box for the meeting before.)
+TEST(Slei3dExplorer, CaricTeamDoneWithItsLastBoxGoesToItsHubWithWhatItFound) {
+  auto explorer = makeExplorer(
+      Config::fromText("", "run.ini"), "caric-team",
+      {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}, {"i1", Role::Photographer}});
+  FleetPlan plan;
+  plan.subgroups.push_back({1, {2}, 1, {cornerOf(0), 400.0}, 0});
+  Reply reply;  // at 1 s, as if met on the way: box 1 still, the station's one stop the hub
+  reply.meetingNumber = 1;
+  reply.box = 1;
+  reply.next = {cornerOf(0), 400.0};
+  reply.stops = {reply.next};
+  agent::AgentView view = startView();
+  double nearestBox1 = 1e300, backAt = -1.0;
+  for (int step = 0; step * 0.1 <= 250.0 && backAt < 0.0; ++step) {
+    view.time = step * 0.1;
+    view.messages.clear();
+    view.detectedFeatures.clear();
+    if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
+    if (step == 10) view.messages.push_back({"gcs", kReplyTopic, encode(reply)});
+    if (step == 20) view.detectedFeatures.push_back({7, Vec3(20, 4, 2), -Vec3::UnitY(), 2.0});
+    const auto command = explorer->decide(view);
+    if (command.setpoint) view.odometry.position = command.setpoint->position;
+    const Vec3& at = view.odometry.position;
+    nearestBox1 = std::min(nearestBox1, (at - kBoxes[1].center).head<2>().norm());
+    if (nearestBox1 < 8.0 && (at - cornerOf(0)).head<2>().norm() < 5.0) backAt = view.time;
+  }
+  EXPECT_LT(nearestBox1, 8.0);  // it went to box 1
+  EXPECT_GT(backAt, 0.0);       // and came back to the hub
+  EXPECT_LT(backAt, 250.0);
+}
+
+// Where e1, a caric-team explorer with nothing left, waits at its static station's hub (6, 0)
+// after 60 s, when it is the `slot`-th of the station's two explorers in the plan: each on its
+// own side, 3 m out (the first towards +x), 6 m from the other. (Both waited at the one point
+// nearest the station, and the lower-priority one, backed off to the flight's 4 m separation,
+// was out of the station's link.)
+Vec3 hubWait(size_t slot) {
+  auto explorer =
+      makeExplorer(Config::fromText("", "run.ini"), "caric-team",
+                   {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}, {"e2", Role::Explorer}});
+  const Meeting hub{Vec3(6, 0, 0), 400.0};
+  FleetPlan plan;
+  plan.subgroups = {{2, {}, -1, hub, 0}, {2, {}, -1, hub, 0}};
+  plan.subgroups[slot].explorer = 1;
+  agent::AgentView view = startView();
+  for (int step = 0; step * 0.1 <= 60.0; ++step) {
+    view.time = step * 0.1;
+    view.messages.clear();
+    if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
+    const auto command = explorer->decide(view);
+    if (command.setpoint) view.odometry.position = command.setpoint->position;
+  }
+  return view.odometry.position;
+}
+
+TEST(Slei3dExplorer, CaricTeamExplorersWaitOnTheirOwnSideOfTheHub) {
+  const Vec3 first = hubWait(0), second = hubWait(1);
+  EXPECT_LT((first.head<2>() - Eigen::Vector2d(9, 0)).norm(), 0.5);
+  EXPECT_LT((second.head<2>() - Eigen::Vector2d(3, 0)).norm(), 0.5);
+  EXPECT_LT((first - Vec3(6, 0, 0.5)).norm(), 4.5);  // within the 5 m link, with a margin
 }
 
 // The time e1 first sends orders to i1 (its one inspector, always in sight) after it found a
@@ -347,8 +415,8 @@ Cloud pointsIn(const Eigen::Vector3f& from, const Eigen::Vector3f& to) {
 // (-7.9, 5.6, 6) and (-4.4, 2.1, 6). One LiDAR sweep at 0.5 s maps `scan` from the start.
 std::map<std::string, std::set<uint32_t>> handOutAfter(
     const Cloud& scan, const std::vector<Vec3>& features = {Vec3(-3, 8, 2), Vec3(3, 8, 2)},
-    const char* config = "") {
-  auto explorer = makeExplorer(Config::fromText(config, "run.ini"), "slei3d",
+    const char* config = "", const char* strategy = "slei3d") {
+  auto explorer = makeExplorer(Config::fromText(config, "run.ini"), strategy,
                                {{"gcs", Role::GroundStation},
                                 {"e1", Role::Explorer},
                                 {"i1", Role::Photographer},
@@ -392,6 +460,24 @@ std::map<std::string, std::set<uint32_t>> handOutAfter(
     }
   }
   return tasks;
+}
+
+// caric-team at its hub (box 0's corner, where it explores): four features go to its two
+// inspectors, in sight and free, in two runs of a nearest-neighbour tour: two each, the two
+// nearer each other together. (All went to the one free soonest: with its returns 300 s apart,
+// the other one idled.)
+TEST(Slei3dExplorer, CaricTeamSplitsItsFeaturesAmongItsFreeInspectors) {
+  const auto tasks = handOutAfter(std::make_shared<std::vector<Eigen::Vector3f>>(),
+                                  {Vec3(-3, 8, 2), Vec3(-2, 8, 2), Vec3(3, 8, 2), Vec3(4, 8, 2)},
+                                  "", "caric-team");
+  ASSERT_EQ(tasks.size(), 2u);
+  const auto& first = tasks.begin()->second;
+  const auto& second = tasks.rbegin()->second;
+  EXPECT_EQ(first.size(), 2u);
+  EXPECT_EQ(second.size(), 2u);
+  // Features 7 and 8 at x -3 and -2, 9 and 10 at 3 and 4.
+  EXPECT_TRUE(first == (std::set<uint32_t>{7, 8}) || first == (std::set<uint32_t>{9, 10}));
+  EXPECT_TRUE(second == (std::set<uint32_t>{7, 8}) || second == (std::set<uint32_t>{9, 10}));
 }
 
 TEST(Slei3dExplorer, WithNoMeetingPointFoundTheFeaturesAreSplitAmongItsInspectors) {

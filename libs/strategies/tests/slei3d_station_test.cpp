@@ -375,5 +375,36 @@ TEST(Slei3dStation, BadWorkspaceAndSearchKeysAreErrors) {
   }
 }
 
+// The static station's meetings: slei-fix's every fix_interval (120 s), caric-team's at most
+// every team_interval (300 s), where the station stands, the first ones too.
+TEST(Slei3dStation, AStaticStationMeetsEveryIntervalOfItsVariant) {
+  const auto nextMeetings = [](const std::string& variant, const std::string& text) {
+    const auto config = Config::fromText(text, "run.ini");
+    auto strategy = agent::StrategyRegistry{};
+    registerSlei3d(strategy);
+    auto station = strategy.create(variant, stationContext(config));
+    std::optional<FleetPlan> plan;
+    for (const auto& m : station->decide(stationView(0.0, {})).messages)
+      if (m.topic == kPlanTopic) plan = decodePlan(m.bytes);
+    EXPECT_TRUE(plan && !plan->subgroups.empty());
+    const double first = plan ? plan->subgroups.front().firstMeeting.time : -1.0;
+    const auto reply = sent<Reply>(
+        station->decide(stationView(50.0, {{"e1", kReportTopic, encode(reportOf(0, false, 1))}})),
+        "e1", kReplyTopic, decodeReply);
+    EXPECT_TRUE(reply);
+    if (reply) {
+      EXPECT_TRUE(reply->next.place.isApprox(Vec3(15, -15, 0.1), 1e-9));
+    }
+    return std::make_pair(first, reply ? reply->next.time : -1.0);
+  };
+  EXPECT_EQ(nextMeetings("slei-fix", ""), std::make_pair(120.0, 170.0));
+  EXPECT_EQ(nextMeetings("caric-team", ""), std::make_pair(300.0, 350.0));
+  EXPECT_EQ(nextMeetings("caric-team", "[slei3d]\nteam_interval = 200\n"),
+            std::make_pair(200.0, 250.0));
+  EXPECT_EQ(nextMeetings("slei-fix", "[slei3d]\nteam_interval = 200\n"),
+            std::make_pair(120.0, 170.0));
+  EXPECT_THROW(nextMeetings("caric-team", "[slei3d]\nteam_interval = 5\n"), InputError);
+}
+
 }  // namespace
 }  // namespace coinspect::strategies::slei

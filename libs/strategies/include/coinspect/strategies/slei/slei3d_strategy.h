@@ -44,8 +44,9 @@ namespace coinspect::strategies::slei {
 // - Pre: SLEI-PRE, each explorer's boxes in an order fixed at the start (no rolling choice);
 // - Fix: SLEI-FIX, the station does not move; explorers come back to it at fixed intervals;
 // - Team: CARIC-style teams (`caric-team`): each team a fixed region (Pre's dealt boxes), a
-//   static station as the relay hub (Fix's returns) where the inspectors wait between lists,
-//   and the explorer hands features to the inspector free soonest, no meeting optimisation;
+//   static station as the relay hub (returns every teamInterval at most, and once the region is
+//   explored) where the inspectors wait between lists, and the explorer splits its features
+//   among the inspectors free there, no meeting optimisation;
 // - ExploreFirst: exploration, then inspection (MU-CPPI style, `explore-then-inspect`): the
 //   explorers explore every box before handing out any feature; the inspectors wait meanwhile.
 enum class SleiVariant { Slei3d, Pre, Fix, Team, ExploreFirst };
@@ -53,7 +54,11 @@ enum class SleiVariant { Slei3d, Pre, Fix, Team, ExploreFirst };
 struct SleiOptions {
   SleiVariant variant = SleiVariant::Slei3d;
   double fixInterval = 120.0;  // s between an explorer's returns to the static station (slei-fix)
-  bool priorityFirst = true;   // high-priority features allocated first (off: like the others)
+  // caric-team: s at most between an explorer's returns to its hub (it also comes back as soon
+  // as its region's last box is explored). Every 120 s, as slei-fix, no box of slei-c's scene
+  // seed 2 was explored within 1000 s: the trips took the time of the exploring.
+  double teamInterval = 300.0;
+  bool priorityFirst = true;  // high-priority features allocated first (off: like the others)
   // FF3E's bound, greedy form: explore only what still lets it reach its station meeting on
   // time, and leave at once when nothing fits (off: nearest first, leave by the clock).
   bool deadlineBound = false;
@@ -157,6 +162,10 @@ class Slei3dStrategy : public agent::Strategy {
   bool staticStation() const {
     return options_.variant == SleiVariant::Fix || options_.variant == SleiVariant::Team;
   }
+  // s from a reply to an explorer's next meeting at the static station.
+  double returnInterval() const {
+    return options_.variant == SleiVariant::Team ? options_.teamInterval : options_.fixInterval;
+  }
 
   // ---- station (slei3d_station.cpp)
   struct StationMeeting {
@@ -210,11 +219,15 @@ class Slei3dStrategy : public agent::Strategy {
   void adoptInspectors(const agent::AgentView& view, const std::vector<Adoption>& adopt);
   // Done with the box before the meeting: the station's stop where it can be caught soonest.
   void goToStation(const agent::AgentView& view, const Vec3& place);
-  // Where it meets a station at `place`: the flyable point nearest its antenna in line of sight.
+  // Where it meets a station at `place`: the flyable point nearest its antenna in line of sight
+  // (a static station's: nearest the explorer's own side of it).
   Vec3 stationPoint(const agent::AgentView& view, const Vec3& place) const;
+  // The flyable point within kApproachReach of `partner`, in line of sight of it, nearest to
+  // `toward` (default: to the partner itself).
   Vec3 meetingPointNear(const agent::AgentView& view, const Vec3& partner, const Vec3& fallback,
-                        bool above) const;
+                        bool above, const std::optional<Vec3>& toward = std::nullopt) const;
   double lastApproach_ = -1e300;
+  std::optional<Vec3> hubSlot_;  // a static station's explorer: its stationPoint, once done
   // `by`: when the station should be there.
   std::optional<Vec3> earlyStop(const agent::AgentView& view, double* by, size_t* stop) const;
 
@@ -354,8 +367,9 @@ class Slei3dStrategy : public agent::Strategy {
     bool approached = false;
   };
   std::vector<Handout> handouts_;  // in the order they are flown
-  // All pending features to the inspector free soonest, met where its plan ends (caric-team's
-  // rule at its hub); none when the explorer would wait long for it while exploring remains.
+  // caric-team's rule at its hub: the pending features split in equal runs of a nearest-neighbour
+  // tour among the inspectors free within kMaxHandoutWait of the first one free, each met where
+  // its plan ends; none when the explorer would wait long for the first while exploring remains.
   std::vector<Handout> handToFreeSoonest(const agent::AgentView& view,
                                          bool explorationFinished) const;
   // SOEI's candidates of a mandatory hand-out: the point near where its plan ends for an
