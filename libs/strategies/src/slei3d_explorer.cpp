@@ -21,11 +21,12 @@ constexpr double kReplanPeriod = 15.0;   // s between sweep plans (the map grows
 constexpr double kStationAntenna = 0.5;  // m above the ground, a station's link end
 constexpr double kApproachReach = 4.5;   // m: within the 5 m link with a margin
 constexpr double kHubSlot = 3.0;  // m from a static station where each of its explorers meets it
-constexpr double kApproachRetry = 3.0;      // s between approaches after a failed flight
-constexpr double kReaimPeriod = 5.0;        // s between checks of a station meeting point ...
-constexpr double kReaimOffset = 1.0;        // m ... left by more than this: flown to again
-constexpr double kEarlyPatience = 30.0;     // s past the expected time at an early stop
-constexpr double kLostFor = 60.0;           // s an inspector missed twice is not looked for
+const Vec3 kParkAbove(0.0, 0.0, 6.0);    // a static station's explorer with nothing left: up there
+constexpr double kApproachRetry = 3.0;   // s between approaches after a failed flight
+constexpr double kReaimPeriod = 5.0;     // s between checks of a station meeting point ...
+constexpr double kReaimOffset = 1.0;     // m ... left by more than this: flown to again
+constexpr double kEarlyPatience = 30.0;  // s past the expected time at an early stop
+constexpr double kLostFor = 60.0;        // s an inspector missed twice is not looked for
 constexpr double kPresumedFailed = 120.0;   // s without its status: a missed inspector failed
 constexpr double kMaxHandoutWait = 15.0;    // s an explorer may plan to wait for an inspector
 constexpr double kTurnTime = 1.5;           // s at a sweep stop for the heading to come round
@@ -1151,10 +1152,12 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
       break;
     }
     case ExplorerPhase::Done:
-      // At a static station's hub it waits at its own side of the station, not where it last
-      // handed out, on the inspectors' circle and in the others' way.
+      // At a static station's hub it waits above its own side of the station, out of the way:
+      // where it last handed out it stood on the inspectors' circle, and on its side at their
+      // height it held an inspector with a list at the hub for 380 s (caric-team on slei-a,
+      // scene seed 1: the flight keeps lower-priority units 4 m off). Its meetings bring it down.
       if (staticStation()) {
-        if (!hubSlot_) hubSlot_ = stationPoint(view, stationMeeting_.place);
+        if (!hubSlot_) hubSlot_ = stationPoint(view, stationMeeting_.place) + kParkAbove;
         flight_->goTo(*hubSlot_, options_.speed);
       }
       command.activity = agent::Activity::Waiting;

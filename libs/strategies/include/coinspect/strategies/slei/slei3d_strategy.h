@@ -227,7 +227,7 @@ class Slei3dStrategy : public agent::Strategy {
   Vec3 meetingPointNear(const agent::AgentView& view, const Vec3& partner, const Vec3& fallback,
                         bool above, const std::optional<Vec3>& toward = std::nullopt) const;
   double lastApproach_ = -1e300;
-  std::optional<Vec3> hubSlot_;  // a static station's explorer: its stationPoint, once done
+  std::optional<Vec3> hubSlot_;  // a static station's explorer with nothing left waits there
   // `by`: when the station should be there.
   std::optional<Vec3> earlyStop(const agent::AgentView& view, double* by, size_t* stop) const;
 
