@@ -545,8 +545,8 @@ double Slei3dStrategy::predictRemaining(const agent::AgentView& view) const {
   return planning::predictCompletion(in, options).remaining;
 }
 
-std::vector<Slei3dStrategy::Handout> Slei3dStrategy::handToFreeSoonest(
-    const agent::AgentView& view, bool explorationFinished) const {
+std::vector<Slei3dStrategy::Handout> Slei3dStrategy::splitAtHub(const agent::AgentView& view,
+                                                                bool explorationFinished) const {
   if (pending_.empty()) return {};
   std::vector<std::pair<size_t, planning::InspectorPlan>> free;  // model, predicted plan
   for (size_t k = 0; k < inspectors_.size(); ++k)
@@ -706,7 +706,7 @@ void Slei3dStrategy::planHandout(const agent::AgentView& view) {
     // (Checked first: the hand-out's meeting point costs a reachability flood of the map.)
     const Vec3 hub = subgroupOf(static_cast<uint32_t>(unit_.self))->firstMeeting.place;
     const bool atHub = (view.odometry.position - hub).norm() <= kHubReach;
-    if (atHub || box_ < 0) startHandouts(handToFreeSoonest(view, explorationFinished_ || box_ < 0));
+    if (atHub || box_ < 0) startHandouts(splitAtHub(view, explorationFinished_ || box_ < 0));
     return;
   }
   // Inspectors missed twice in a row are left out for a while: the explorer does not know

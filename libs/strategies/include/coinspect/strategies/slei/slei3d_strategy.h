@@ -370,8 +370,7 @@ class Slei3dStrategy : public agent::Strategy {
   // caric-team's rule at its hub: the pending features split in equal runs of a nearest-neighbour
   // tour among the inspectors free within kMaxHandoutWait of the first one free, each met where
   // its plan ends; none when the explorer would wait long for the first while exploring remains.
-  std::vector<Handout> handToFreeSoonest(const agent::AgentView& view,
-                                         bool explorationFinished) const;
+  std::vector<Handout> splitAtHub(const agent::AgentView& view, bool explorationFinished) const;
   // SOEI's candidates of a mandatory hand-out: the point near where its plan ends for an
   // inspector with none sampled (points[i] for plans[i]).
   void addPlanEndPoints(const agent::AgentView& view,
