@@ -189,8 +189,24 @@ void Slei3dStrategy::adoptInspectors(const agent::AgentView& view,
   }
 }
 
+void Slei3dStrategy::learnInspected(uint32_t id) {
+  if (knownInspected_.insert(id).second && boxFeatures_.count(id)) ++inspectedInBox_;
+}
+
+void Slei3dStrategy::dropKnownInspected(std::vector<FeatureTask>& tasks) const {
+  const auto known = [&](const FeatureTask& t) { return knownInspected_.count(t.id) > 0; };
+  tasks.erase(std::remove_if(tasks.begin(), tasks.end(), known), tasks.end());
+}
+
 void Slei3dStrategy::collectDetections(const agent::AgentView& view) {
+  // Results it carries (the station's, handed over at its meetings, hold every subgroup's):
+  // a feature another explorer found and had inspected is not handed out again (each explorer
+  // reports its own first detections). Without this, on slei-c scene seed 1 features already
+  // collected were inspected 47 times before 94 % were collected; 19 with it.
+  for (const uint32_t id : view.receivedResults)
+    learnInspected(id);
   for (const auto& f : view.detectedFeatures) {
+    if (knownInspected_.count(f.id)) continue;
     FeatureTask task;
     task.id = f.id;
     task.position = f.position;
@@ -210,7 +226,7 @@ void Slei3dStrategy::readStatus(const agent::AgentView& view) {
     const auto status = decodeStatus(message.bytes);
     if (!status) continue;
     for (const uint32_t id : status->inspected)
-      if (reportedInspected_.insert(id).second && boxFeatures_.count(id)) ++inspectedInBox_;
+      learnInspected(id);
     for (auto& model : inspectors_) {
       if (names_[model.unit] != message.from) continue;
       model.acknowledged = std::max(model.acknowledged, status->lastOrders);
@@ -221,12 +237,8 @@ void Slei3dStrategy::readStatus(const agent::AgentView& view) {
       model.lostUntil = 0.0;  // in contact: found
       model.heard = view.time;
       model.listLeft = status->listLeft;
-      const auto done = [&](const FeatureTask& t) { return reportedInspected_.count(t.id) > 0; };
-      model.tasks.erase(std::remove_if(model.tasks.begin(), model.tasks.end(), done),
-                        model.tasks.end());
-      model.unconfirmed.erase(
-          std::remove_if(model.unconfirmed.begin(), model.unconfirmed.end(), done),
-          model.unconfirmed.end());
+      dropKnownInspected(model.tasks);
+      dropKnownInspected(model.unconfirmed);
       // Done with every list it was sent: what it did not report inspected it skipped (no way
       // to its poses, or no score there), and its results are on board (the status came over
       // the link). Kept, the skipped features had it busy for good in the plans, and a hand-out
@@ -867,6 +879,7 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
   }
   collectDetections(view);
   readStatus(view);
+  dropKnownInspected(pending_);
   agent::AgentCommand command;
   const Vec3 here = view.odometry.position;
   const Vec3 stationPlace = earlyPlace_ ? *earlyPlace_ : stationMeeting_.place;

@@ -31,7 +31,11 @@ agent::AgentCommand Slei3dStrategy::decideInspector(const agent::AgentView& view
     waitAt_ = firstWaitPoint(*subgroup, k);
   }
   if (!myExplorer_) myExplorer_ = subgroup->explorer;
+  // Its own inspections and the results it was handed (its explorer carries the station's):
+  // a feature in either is skipped, and its status tells the explorer so.
   for (const uint32_t f : view.inspectedFeatures)
+    inspected_.insert(f);
+  for (const uint32_t f : view.receivedResults)
     inspected_.insert(f);
   for (const auto& message : view.messages) {
     if (message.topic != kOrdersTopic) continue;

@@ -4,11 +4,12 @@
 // over it (the roof pass); it comes back for an inspector's results until its list is done, and
 // not once it is done, inspected or skipped, and with no box left not even for its station
 // meeting; pushed off its station meeting point, it goes back; with `handout_at_box_end` it
-// hands out nothing before its box is explored; caric-team's explorer splits its features among
-// its free inspectors at the hub, comes back there once its last box is explored, and waits on
-// its own side of the station.
+// hands out nothing before its box is explored, and never a feature whose result it carries;
+// caric-team's explorer splits its features among its free inspectors at the hub, comes back
+// there once its last box is explored, and waits on its own side of the station.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <optional>
 #include <set>
@@ -352,7 +353,10 @@ struct HandoutTiming {
   double roofPassEnd = -1.0;
 };
 
-HandoutTiming handoutWhileExploring(const Config& config, bool highPriority) {
+// e1 detects feature 7 at 2 s with i1 in sight; at `resultAt` s (if >= 0) it receives 7's
+// inspection result (from another subgroup, through the station).
+HandoutTiming handoutWhileExploring(const Config& config, bool highPriority,
+                                    double resultAt = -1.0) {
   auto explorer = makeExplorer(
       config, "slei3d",
       {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}, {"i1", Role::Photographer}});
@@ -368,8 +372,11 @@ HandoutTiming handoutWhileExploring(const Config& config, bool highPriority) {
     if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
     view.neighbours = {inspector};
     view.detectedFeatures.clear();
+    view.receivedResults.clear();
     if (step == 20)
       view.detectedFeatures.push_back({7, Vec3(0, 8, 2), -Vec3::UnitY(), 2.0, highPriority});
+    if (resultAt >= 0.0 && step == static_cast<int>(std::lround(resultAt * 10.0)))
+      view.receivedResults.push_back(7);
     const auto command = explorer->decide(view);
     if (command.setpoint) view.odometry.position = command.setpoint->position;
     const Vec3& at = view.odometry.position;
@@ -397,6 +404,18 @@ TEST(Slei3dExplorer, WithHandoutAtBoxEndItHandsOutOnlyOnceItsBoxIsExplored) {
   EXPECT_LT(soei.firstOrders, held.roofPassEnd);
   EXPECT_GE(held.firstOrders, held.roofPassEnd);
   EXPECT_LT(urgent.firstOrders, held.roofPassEnd);
+}
+
+// A feature whose result it carries is not handed out: neither one detected after the result
+// came (SOEI would hand it out at once), nor one it held when the result came (held for the end
+// of the box, past the roof pass).
+TEST(Slei3dExplorer, AFeatureWhoseResultItCarriesIsNotHandedOut) {
+  const auto known = handoutWhileExploring(Config::fromText("", "run.ini"), false, 1.0);
+  EXPECT_LT(known.firstOrders, 0.0);
+  const auto config = Config::fromText("[slei3d]\nhandout_at_box_end = true\n", "run.ini");
+  const auto heldThenKnown = handoutWhileExploring(config, false, 3.0);
+  ASSERT_GT(heldThenKnown.roofPassEnd, 3.0);
+  EXPECT_LT(heldThenKnown.firstOrders, 0.0);
 }
 
 using Cloud = std::shared_ptr<std::vector<Eigen::Vector3f>>;

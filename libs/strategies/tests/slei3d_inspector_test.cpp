@@ -1,6 +1,7 @@
 // The slei3d inspector driven by hand on a perfect vehicle: given a feature its explorer detected
 // from the side (a grazing line of sight), it first inspects it from its own view in front of the
-// feature, then, the feature still not inspected after its patience, from the detection pose.
+// feature, then, the feature still not inspected after its patience, from the detection pose;
+// a feature whose result reaches it on the way it skips.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,8 +38,10 @@ agent::CameraInfo caricCamera() {
 // Where the inspector is at each whole second, up to `until`; the feature is never inspected.
 // `frame`, when given, reaches it as a teammate's key frame before its orders do (which then
 // come at 2 s, after its map has taken the frame in).
+// `resultAt`, when >= 0, is when the feature's inspection result reaches it (another
+// inspector's, carried by its explorer).
 std::vector<Vec3> fly(double until, const std::string& ini = "",
-                      const agent::KeyFrameView& frame = nullptr) {
+                      const agent::KeyFrameView& frame = nullptr, double resultAt = -1.0) {
   static agent::StrategyRegistry registry = [] {
     agent::StrategyRegistry r;
     registerSlei3d(r);
@@ -77,6 +80,9 @@ std::vector<Vec3> fly(double until, const std::string& ini = "",
     view.time = step * 0.1;
     view.messages.clear();
     view.receivedKeyFrames.clear();
+    view.receivedResults.clear();
+    if (resultAt >= 0.0 && step == static_cast<int>(std::lround(resultAt * 10.0)))
+      view.receivedResults.push_back(7);
     if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
     if (step == 0 && frame) view.receivedKeyFrames.push_back(frame);
     if (step == (frame ? 20 : 1)) view.messages.push_back({"e1", kOrdersTopic, encode(orders)});
@@ -106,6 +112,16 @@ TEST(Slei3dInspector, InspectsFromInFrontOfTheFeatureThenFromWhereItWasDetected)
   EXPECT_GE(inFront, 8);  // s; the patience is 12 s
   EXPECT_GE(atDetection, 8);
   EXPECT_GT(firstAtDetection, lastInFront);
+}
+
+// The feature's result reaches it on its way to the feature: it does not hold at either pose.
+TEST(Slei3dInspector, SkipsAFeatureWhoseResultItReceived) {
+  const auto at = fly(40.0, "", nullptr, 1.5);
+  const Vec3 ownView = kFeature + Vec3(0, -3, 0);
+  for (size_t t = 0; t < at.size(); ++t) {
+    EXPECT_GT((at[t] - ownView).norm(), 0.5) << t << " s";
+    EXPECT_GT((at[t] - kDetectedFrom).norm(), 0.5) << t << " s";
+  }
 }
 
 // A fin 0.5 m thick standing out of the face from the feature's side to 7 m in front of it, seen

@@ -196,6 +196,8 @@ class Slei3dStrategy : public agent::Strategy {
   // ---- explorer (slei3d_explorer.cpp)
   enum class ExplorerPhase { ToBox, Exploring, ToStation, AtStation, ToInspector, Done };
   agent::AgentCommand decideExplorer(const agent::AgentView& view);
+  void learnInspected(uint32_t id);
+  void dropKnownInspected(std::vector<FeatureTask>& tasks) const;
   void collectDetections(const agent::AgentView& view);
   void readStatus(const agent::AgentView& view);
   // What an exploration plan found: something to fly to now, nothing left to explore (of what
@@ -328,9 +330,10 @@ class Slei3dStrategy : public agent::Strategy {
   double lastHandout_ = -1e300;
   std::vector<FeatureTask> pending_;  // detected, not handed out yet
   size_t scannedInBox_ = 0;           // features detected in the current box (N_s)
-  size_t inspectedInBox_ = 0;         // of those, reported inspected (N_r)
+  size_t inspectedInBox_ = 0;         // of those, known inspected (N_r)
   std::set<uint32_t> boxFeatures_;
-  std::set<uint32_t> reportedInspected_;  // by its inspectors, as they said
+  // Reported inspected by its inspectors, or whose results it carries (learnInspected).
+  std::set<uint32_t> knownInspected_;
   // What the explorer knows of one of its inspectors: where it was last known to be and the
   // features it was given since (its plan, in order), from which its hover windows follow.
   struct InspectorModel {
