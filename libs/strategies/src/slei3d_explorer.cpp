@@ -255,8 +255,7 @@ Slei3dStrategy::Plan Slei3dStrategy::planExploration(const agent::AgentView& vie
   const auto& box = boxes_[static_cast<size_t>(box_)];
   const Vec3 here = view.odometry.position;
   // Where and by when it must leave what it does for its station meeting.
-  const Vec3 meeting(stationMeeting_.place.x(), stationMeeting_.place.y(),
-                     groundZ_ + options_.meetHeight);
+  const Vec3 meeting = atMeetHeight(stationMeeting_.place);
   const double deadline = options_.deadlineBound && stationMeeting_.time < kNoMeeting
                               ? stationMeeting_.time - kLeaveMargin
                               : std::numeric_limits<double>::infinity();
@@ -381,9 +380,10 @@ Slei3dStrategy::Plan Slei3dStrategy::planExploration(const agent::AgentView& vie
 }
 
 // The stop of the station's schedule where the explorer, flying there now, would find the
-// station soonest; none when that is not well before the explorer's own meeting. The station
-// drives straight to its next stop after each meeting (it was where this explorer met it at the
-// last reply) and leaves a stop once its meeting is held, about the stop's time.
+// station soonest; none when that is not well before the explorer's own meeting, or when,
+// the station not there, it could not wait its patience there and still make its own meeting.
+// The station drives straight to its next stop after each meeting (it was where this explorer
+// met it at the last reply) and leaves a stop once its meeting is held, about the stop's time.
 std::optional<Vec3> Slei3dStrategy::earlyStop(const agent::AgentView& view, double* by,
                                               size_t* index) const {
   constexpr double kWorthIt = 20.0;  // s saved at least
@@ -391,6 +391,7 @@ std::optional<Vec3> Slei3dStrategy::earlyStop(const agent::AgentView& view, doub
   const auto drive = [&](const Vec3& a, const Vec3& b) {
     return std::hypot(a.x() - b.x(), a.y() - b.y()) / options_.plan.stationSpeed;
   };
+  const Vec3 ownPlace = atMeetHeight(stationMeeting_.place);
   std::optional<Vec3> best;
   double soonest = stationMeeting_.time - kWorthIt;
   double free = lastReply_.time;  // when the station can leave for the next stop
@@ -400,7 +401,12 @@ std::optional<Vec3> Slei3dStrategy::earlyStop(const agent::AgentView& view, doub
     const double arrives = free + drive(from, stop.place);
     const bool own = stop.time >= stationMeeting_.time;
     const double at = std::max(arrives, view.time + straightTime(here, stop.place, options_.speed));
-    if ((own || at <= stop.time) && at < soonest) soonest = *by = at, best = stop.place, *index = k;
+    const bool keepsOwn =
+        own ||
+        at + kEarlyPatience + straightTime(stop.place, ownPlace, options_.speed) + kLeaveMargin <=
+            stationMeeting_.time;
+    if ((own || at <= stop.time) && keepsOwn && at < soonest)
+      soonest = *by = at, best = stop.place, *index = k;
     if (own) break;
     free = std::max(arrives, stop.time) + kMeetingService;
     from = stop.place;
@@ -438,9 +444,13 @@ Vec3 Slei3dStrategy::meetingPointNear(const agent::AgentView& view, const Vec3& 
   return best;
 }
 
+Vec3 Slei3dStrategy::atMeetHeight(const Vec3& place) const {
+  return Vec3(place.x(), place.y(), groundZ_ + options_.meetHeight);
+}
+
 Vec3 Slei3dStrategy::stationPoint(const agent::AgentView& view, const Vec3& place) const {
   const Vec3 station(place.x(), place.y(), groundZ_ + kStationAntenna);
-  const Vec3 above(place.x(), place.y(), groundZ_ + options_.meetHeight);
+  const Vec3 above = atMeetHeight(place);
   const auto* own = subgroupOf(static_cast<uint32_t>(unit_.self));
   if (!staticStation() || !own) return meetingPointNear(view, station, above, true);
   // Every explorer of a static station meets it at the one place: each comes from its own side,
@@ -883,7 +893,7 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
   agent::AgentCommand command;
   const Vec3 here = view.odometry.position;
   const Vec3 stationPlace = earlyPlace_ ? *earlyPlace_ : stationMeeting_.place;
-  const Vec3 meetingPlace(stationPlace.x(), stationPlace.y(), groundZ_ + options_.meetHeight);
+  const Vec3 meetingPlace = atMeetHeight(stationPlace);
 
   // The station's reply ends a meeting.
   for (const auto& message : view.messages) {
@@ -997,8 +1007,18 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
       // at an earlier stop or on its way from one. The explorer goes back along the station's
       // route, stop by stop, and then to the planned meeting place. (Waiting there instead
       // left a slei-a explorer idle from 190 s to 473 s while the station stood 14 m away.)
+      // Nor does it look for it past the time to leave for its own meeting, where the station
+      // comes and gives it up a while after (slei-c, scene seed 5: explorer1 looked from 1408 to
+      // 1606 s, its meeting at 1455 s; the station, late, waited there from about 1520 s and gave
+      // it up at 1582 s; the explorer then waited at its place, unanswered, to 2327 s).
+      const Vec3 ownPlace = atMeetHeight(stationMeeting_.place);
       if (earlyPlace_ && phase_ == ExplorerPhase::ToStation &&
-          view.time > earlyBy_ + kEarlyPatience) {
+          view.time + straightTime(here, ownPlace, options_.speed) + kLeaveMargin >=
+              stationMeeting_.time) {
+        earlyPlace_.reset();
+        goToStation(view, stationMeeting_.place);
+      } else if (earlyPlace_ && phase_ == ExplorerPhase::ToStation &&
+                 view.time > earlyBy_ + kEarlyPatience) {
         if (earlyStop_ > 0 && earlyStop_ <= stationStops_.size()) {
           --earlyStop_;
           earlyPlace_ = stationStops_[earlyStop_].place;

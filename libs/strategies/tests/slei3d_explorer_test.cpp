@@ -1,12 +1,13 @@
 // The slei3d explorer driven by hand on a perfect vehicle: with its next box reserved, an
 // explorer done with its box goes on to the next one before its station meeting; without one, it
-// looks for a late station along the station's route; before it is done with a box, it flies
-// over it (the roof pass); it comes back for an inspector's results until its list is done, and
-// not once it is done, inspected or skipped, and with no box left not even for its station
-// meeting; pushed off its station meeting point, it goes back; with `handout_at_box_end` it
-// hands out nothing before its box is explored, and never a feature whose result it carries;
-// caric-team's explorer splits its features among its free inspectors at the hub, comes back
-// there once its last box is explored, and waits on its own side of the station.
+// looks for a late station along the station's route, never past the time to leave for its own
+// meeting; before it is done with a box, it flies over it (the roof pass); it comes back for an
+// inspector's results until its list is done, and not once it is done, inspected or skipped, and
+// with no box left not even for its station meeting; pushed off its station meeting point, it
+// goes back; with `handout_at_box_end` it hands out nothing before its box is explored, and
+// never a feature whose result it carries; caric-team's explorer splits its features among its
+// free inspectors at the hub, comes back there once its last box is explored, and waits on its
+// own side of the station.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,20 +71,21 @@ agent::AgentView startView() {
   return view;
 }
 
-// e1 explores box 0; its meeting with the station (never in range) is at 400 s at box 0's
-// corner; a reply at 1 s (as if met on the way) optionally reserves box 1, and lists the
+// e1 explores box 0; its meeting with the station (never in range) is at `meetingTime` at box
+// 0's corner; a reply at 1 s (as if met on the way) optionally reserves box 1, and lists the
 // station's stops before that meeting (`before`).
-Run fly(const Config& config, int32_t reserved, double until, std::vector<Meeting> before = {}) {
+Run fly(const Config& config, int32_t reserved, double until, std::vector<Meeting> before = {},
+        double meetingTime = 400.0) {
   Run run;
   run.explorer =
       makeExplorer(config, "slei3d", {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}});
   const Vec3 corner = cornerOf(0);
   FleetPlan plan;
-  plan.subgroups.push_back({1, {}, 0, {corner, 400.0}, 0});
+  plan.subgroups.push_back({1, {}, 0, {corner, meetingTime}, 0});
   Reply reply;
   reply.meetingNumber = 1;
   reply.box = 0;
-  reply.next = {corner, 400.0};
+  reply.next = {corner, meetingTime};
   reply.stops = before;
   reply.stops.push_back(reply.next);
   reply.nextBox = reserved;
@@ -128,6 +130,29 @@ TEST(Slei3dExplorer, TheStationLateItLooksForItAtTheStopBefore) {
   const std::vector<Meeting> before = {{cornerOf(1), 20.0}};
   EXPECT_GT(fly(config, -1, 100.0, before).closestToSecondBox, 30.0);  // at its own place first
   EXPECT_LT(fly(config, -1, 250.0, before).closestToSecondBox, 8.0);   // then at box 1's stop
+}
+
+// Looking for the station along its route never costs it its own meeting, where the station
+// comes and gives it up a while after. Its meeting at `m` s at box 0's corner; the station's
+// route: a stop 10 m south of the start at 20 s (too soon for it), then box 1's corner (40 m
+// east) at m - 25 s, where it would find the station at about 70 s. With m = 150 s it waits
+// there, and leaves in time for its own meeting (before: it waited its whole patience there and
+// went on to the stop before: 40 m off at 150 s). With m = 130 s it could not wait its patience
+// there and be back in time: it does not go.
+TEST(Slei3dExplorer, LookingForTheStationItKeepsItsOwnMeeting) {
+  const auto config = Config::fromText("", "run.ini");
+  const auto route = [](double m) {
+    return std::vector<Meeting>{{Vec3(0, -10, 0), 20.0}, {cornerOf(1), m - 25.0}};
+  };
+  const auto fromOwnPlace = [](const slei::Run& run) {
+    return (run.view.odometry.position - cornerOf(0)).head<2>().norm();
+  };
+  const auto waits = fly(config, -1, 150.0, route(150.0), 150.0);
+  EXPECT_LT(waits.closestToSecondBox, 8.0);
+  EXPECT_LT(fromOwnPlace(waits), 2.0);
+  const auto stays = fly(config, -1, 130.0, route(130.0), 130.0);
+  EXPECT_GT(stays.closestToSecondBox, 30.0);
+  EXPECT_LT(fromOwnPlace(stays), 2.0);
 }
 
 // Its box swept (here: nothing mapped to sweep), it flies over it from the footprint's corner
