@@ -391,7 +391,6 @@ std::optional<Vec3> Slei3dStrategy::earlyStop(const agent::AgentView& view, doub
   const auto drive = [&](const Vec3& a, const Vec3& b) {
     return std::hypot(a.x() - b.x(), a.y() - b.y()) / options_.plan.stationSpeed;
   };
-  const Vec3 ownPlace = atMeetHeight(stationMeeting_.place);
   std::optional<Vec3> best;
   double soonest = stationMeeting_.time - kWorthIt;
   double free = lastReply_.time;  // when the station can leave for the next stop
@@ -402,9 +401,7 @@ std::optional<Vec3> Slei3dStrategy::earlyStop(const agent::AgentView& view, doub
     const bool own = stop.time >= stationMeeting_.time;
     const double at = std::max(arrives, view.time + straightTime(here, stop.place, options_.speed));
     const bool keepsOwn =
-        own ||
-        at + kEarlyPatience + straightTime(stop.place, ownPlace, options_.speed) + kLeaveMargin <=
-            stationMeeting_.time;
+        own || ownMeetingArrival(stop.place, at + kEarlyPatience) <= stationMeeting_.time;
     if ((own || at <= stop.time) && keepsOwn && at < soonest)
       soonest = *by = at, best = stop.place, *index = k;
     if (own) break;
@@ -446,6 +443,11 @@ Vec3 Slei3dStrategy::meetingPointNear(const agent::AgentView& view, const Vec3& 
 
 Vec3 Slei3dStrategy::atMeetHeight(const Vec3& place) const {
   return Vec3(place.x(), place.y(), groundZ_ + options_.meetHeight);
+}
+
+double Slei3dStrategy::ownMeetingArrival(const Vec3& from, double leaving) const {
+  return leaving + straightTime(from, atMeetHeight(stationMeeting_.place), options_.speed) +
+         kLeaveMargin;
 }
 
 Vec3 Slei3dStrategy::stationPoint(const agent::AgentView& view, const Vec3& place) const {
@@ -1011,10 +1013,8 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
       // comes and gives it up a while after (slei-c, scene seed 5: explorer1 looked from 1408 to
       // 1606 s, its meeting at 1455 s; the station, late, waited there from about 1520 s and gave
       // it up at 1582 s; the explorer then waited at its place, unanswered, to 2327 s).
-      const Vec3 ownPlace = atMeetHeight(stationMeeting_.place);
       if (earlyPlace_ && phase_ == ExplorerPhase::ToStation &&
-          view.time + straightTime(here, ownPlace, options_.speed) + kLeaveMargin >=
-              stationMeeting_.time) {
+          ownMeetingArrival(here, view.time) >= stationMeeting_.time) {
         earlyPlace_.reset();
         goToStation(view, stationMeeting_.place);
       } else if (earlyPlace_ && phase_ == ExplorerPhase::ToStation &&

@@ -212,6 +212,9 @@ class Slei3dStrategy : public agent::Strategy {
   // Where it enters a box coming from `from`: the box's corner nearest it, at exploreHeight.
   Vec3 boxEntry(int32_t box, const Vec3& from) const;
   Vec3 atMeetHeight(const Vec3& place) const;  // `place` at the explorers' meeting height
+  // When, leaving `from` at `leaving`, it would be at its own station meeting's place, with the
+  // margin it keeps (kLeaveMargin): later than the meeting's time, it is late.
+  double ownMeetingArrival(const Vec3& from, double leaving) const;
   // The unknown workspace (and work sharing, across the footprint only): the octree parts of
   // its box that still hold work (open surface or a frontier), for its report; none for a leaf.
   std::vector<agent::BoxView> remainderParts() const;
