@@ -1,5 +1,6 @@
 #include "batch_octree.h"
 
+#include <algorithm>
 #include <array>
 
 #include "coinspect/core/error.h"
@@ -71,6 +72,7 @@ void BatchOcTree::descend(octomap::OcTreeNode* node, bool justCreated, unsigned 
     updateNodeLogOdds(node, hit ? prob_hit_log : prob_miss_log);
     const bool isOccupied = isNodeOccupied(node);
     if (justCreated) ++known_;
+    if (justCreated || isOccupied != wasOccupied) noteChanged(*begin);
     if (isOccupied != wasOccupied) {
       if (isOccupied)
         ++occupied_;
@@ -98,6 +100,20 @@ void BatchOcTree::descend(octomap::OcTreeNode* node, bool justCreated, unsigned 
     first = last;
   }
   node->updateOccupancyChildren();
+}
+
+void BatchOcTree::noteChanged(uint64_t code) {
+  const octomap::OcTreeKey key = keyOfCode(code);
+  for (int i = 0; i < 3; ++i) {
+    changed_.low[i] = std::min(changed_.low[i], static_cast<int>(key[i]));
+    changed_.high[i] = std::max(changed_.high[i], static_cast<int>(key[i]));
+  }
+}
+
+BatchOcTree::KeyBox BatchOcTree::takeChangedKeys() {
+  const KeyBox box = changed_;
+  changed_ = KeyBox{};
+  return box;
 }
 
 void BatchOcTree::appendLeafCodes(std::vector<uint64_t>& codes) const {

@@ -12,6 +12,7 @@
 
 #include <octomap/OcTree.h>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -78,6 +79,14 @@ class BatchOcTree : public octomap::OcTree {
   size_t knownCells() const { return known_; }
   size_t occupiedCells() const { return occupied_; }
 
+  // The key box of the leaves whose state (unknown, free, occupied) changed since the last
+  // takeChangedKeys(), which empties it; empty: low > high.
+  struct KeyBox {
+    std::array<int, 3> low{65536, 65536, 65536}, high{-1, -1, -1};
+    bool empty() const { return low[0] > high[0]; }
+  };
+  KeyBox takeChangedKeys();
+
  private:
   void descend(octomap::OcTreeNode* node, bool justCreated, unsigned depth, const uint64_t* begin,
                const uint64_t* end, bool missesClearOccupied);
@@ -86,6 +95,9 @@ class BatchOcTree : public octomap::OcTree {
   void appendLeafCodes(const octomap::OcTreeNode* node, unsigned depth, uint64_t morton,
                        std::vector<uint64_t>& codes) const;
 
+  void noteChanged(uint64_t code);
+
+  KeyBox changed_;
   size_t known_ = 0;     // leaves (each a cell: the tree is never pruned)
   size_t occupied_ = 0;  // leaves with log-odds >= the occupancy threshold
 };

@@ -124,6 +124,17 @@ Vec3 OccupancyMap::cellCentre(const Vec3& point) const {
   return Vec3(tree_->keyToCoord(key[0]), tree_->keyToCoord(key[1]), tree_->keyToCoord(key[2]));
 }
 
+std::optional<std::pair<Vec3, Vec3>> OccupancyMap::takeChangedCentres() {
+  const BatchOcTree::KeyBox keys = batch_->takeChangedKeys();
+  if (keys.empty()) return std::nullopt;
+  const auto centre = [&](const std::array<int, 3>& k) {
+    return Vec3(tree_->keyToCoord(static_cast<octomap::key_type>(k[0])),
+                tree_->keyToCoord(static_cast<octomap::key_type>(k[1])),
+                tree_->keyToCoord(static_cast<octomap::key_type>(k[2])));
+  };
+  return std::make_pair(centre(keys.low), centre(keys.high));
+}
+
 size_t OccupancyMap::occupiedCount() const {
   return batch_->occupiedCells();
 }

@@ -62,37 +62,45 @@ void nearestOccupied(const TreeFrame& f, const octomap::OcTreeNode* node, int de
                       q, best2);
 }
 
-// Fills `grid` from the tree: a dense cell is Occupied if a map cell inside it is, else Free if
-// one is known. `stopDepth` < tree depth when the grid's cells are exactly the nodes of that
-// depth (aligned, resolution x 2^k): then a node's inner value already answers for its cell.
+// Fills `part`, the cells [from, from + part size) of a grid of frame `whole`, from the tree: a
+// dense cell is Occupied if a map cell inside it is, else Free if one is known. Cells are found
+// in the whole grid's frame, so that a cell reads the same in a part as in the whole grid.
+// `stopDepth` < tree depth when the grid's cells are exactly the nodes of that depth (aligned,
+// resolution x 2^k): then a node's inner value already answers for its cell.
 class GridFiller {
  public:
-  GridFiller(const TreeFrame& frame, VoxelGrid& grid, int stopDepth)
-      : f_(frame), grid_(grid), stopDepth_(stopDepth) {
-    gridMin_ = grid.origin();
-    gridMax_ = grid.origin() + grid.size().cast<double>() * grid.resolution();
+  GridFiller(const TreeFrame& frame, const GridFrame& whole, const Index3& from, VoxelGrid& part,
+             int stopDepth)
+      : f_(frame),
+        whole_(whole),
+        from_(from),
+        to_(from + part.size() - Index3::Ones()),
+        part_(part),
+        stopDepth_(stopDepth) {
+    partMin_ = whole.origin + from_.cast<double>() * whole.resolution;
+    partMax_ = whole.origin + (to_ + Index3::Ones()).cast<double>() * whole.resolution;
   }
 
   void visit(const octomap::OcTreeNode* node, int depth, const Key3& corner) {
     const int size = 1 << (f_.depth - depth);
     const Vec3 lo = f_.corner(corner);
     const Vec3 hi = lo + Vec3::Constant(size * f_.resolution);
-    if ((hi.array() <= gridMin_.array()).any() || (lo.array() >= gridMax_.array()).any()) return;
+    if ((hi.array() <= partMin_.array()).any() || (lo.array() >= partMax_.array()).any()) return;
     if (depth == stopDepth_ || !f_.tree.nodeHasChildren(node)) {
       const CellState state = f_.tree.isNodeOccupied(node) ? CellState::Occupied : CellState::Free;
-      if (size * f_.resolution <= grid_.resolution() * (1.0 + 1e-9)) {
-        const Index3 cell = grid_.cellOf(lo + Vec3::Constant(0.5 * size * f_.resolution));
-        if (grid_.contains(cell)) combine(cell, state);
+      if (size * f_.resolution <= whole_.resolution * (1.0 + 1e-9)) {
+        const Index3 cell = whole_.cellOf(lo + Vec3::Constant(0.5 * size * f_.resolution));
+        if (inPart(cell)) combine(cell, state);
         return;
       }
       // A node larger than a dense cell: every dense cell whose centre it holds.
-      const Index3 first = grid_.cellOf(lo).cwiseMax(Index3::Zero());
-      const Index3 last = grid_.cellOf(hi).cwiseMin(grid_.size() - Index3::Ones());
+      const Index3 first = whole_.cellOf(lo).cwiseMax(from_);
+      const Index3 last = whole_.cellOf(hi).cwiseMin(to_);
       for (int z = first.z(); z <= last.z(); ++z)
         for (int y = first.y(); y <= last.y(); ++y)
           for (int x = first.x(); x <= last.x(); ++x) {
             const Index3 cell(x, y, z);
-            const Vec3 c = grid_.centre(cell);
+            const Vec3 c = whole_.centre(cell);
             if ((c.array() >= lo.array()).all() && (c.array() < hi.array()).all())
               combine(cell, state);
           }
@@ -104,29 +112,42 @@ class GridFiller {
   }
 
  private:
-  void combine(const Index3& cell, CellState state) {
-    const CellState now = grid_.state(cell);
-    if (state == CellState::Occupied || now == CellState::Unknown) grid_.set(cell, state);
+  bool inPart(const Index3& cell) const {
+    return (cell.array() >= from_.array()).all() && (cell.array() <= to_.array()).all();
+  }
+  void combine(const Index3& wholeCell, CellState state) {
+    const Index3 cell = wholeCell - from_;
+    const CellState now = part_.state(cell);
+    if (state == CellState::Occupied || now == CellState::Unknown) part_.set(cell, state);
   }
 
   const TreeFrame& f_;
-  VoxelGrid& grid_;
+  const GridFrame& whole_;
+  Index3 from_, to_;
+  VoxelGrid& part_;
   int stopDepth_;
-  Vec3 gridMin_, gridMax_;
+  Vec3 partMin_, partMax_;
 };
 
-void fillGrid(const octomap::OcTree& tree, VoxelGrid& grid) {
+// `part` holds the cells from `from` on of a grid of frame `whole` (part.size() of them).
+void fillGrid(const octomap::OcTree& tree, const GridFrame& whole, const Index3& from,
+              VoxelGrid& part) {
   const TreeFrame frame(tree);
   // Aligned grids of resolution x 2^k stop k levels above the leaves.
   int stopDepth = frame.depth;
-  const double ratio = grid.resolution() / frame.resolution;
+  const double ratio = whole.resolution / frame.resolution;
   const int k = static_cast<int>(std::lround(std::log2(ratio)));
   if (k > 0 && k < frame.depth && std::abs(ratio - std::ldexp(1.0, k)) < 1e-9 * ratio) {
-    const Vec3 steps = grid.origin() / grid.resolution();
+    const Vec3 steps = whole.origin / whole.resolution;
     if (((steps.array() - steps.array().round()).abs() < 1e-6).all()) stopDepth = frame.depth - k;
   }
   if (tree.getRoot() == nullptr) return;
-  GridFiller(frame, grid, stopDepth).visit(tree.getRoot(), 0, Key3::Zero());
+  GridFiller(frame, whole, from, part, stopDepth).visit(tree.getRoot(), 0, Key3::Zero());
+}
+
+void fillGrid(const octomap::OcTree& tree, VoxelGrid& grid) {
+  const GridFrame whole = grid.frame();
+  fillGrid(tree, whole, Index3::Zero(), grid);
 }
 
 // The map cells overlapping [min, max] plus a margin of one cell, as a dense grid at the map's
@@ -166,6 +187,16 @@ VoxelGrid OccupancyMap::toVoxelGrid(const Vec3& min, const Vec3& max, double res
   VoxelGrid grid(min, resolution, size);
   fillGrid(*tree_, grid);
   return grid;
+}
+
+VoxelGrid OccupancyMap::toVoxelGrid(const GridFrame& whole, const Index3& from,
+                                    const Index3& to) const {
+  COINSPECT_ASSERT(whole.contains(from) && whole.contains(to) &&
+                   (from.array() <= to.array()).all());
+  VoxelGrid part(whole.origin + from.cast<double>() * whole.resolution, whole.resolution,
+                 to - from + Index3::Ones());
+  fillGrid(*tree_, whole, from, part);
+  return part;
 }
 
 std::vector<FrontierCluster> splitFrontierClusters(const std::vector<FrontierCluster>& clusters,

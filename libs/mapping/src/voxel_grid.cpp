@@ -87,55 +87,70 @@ int VoxelGrid::capCells() const {
 
 void VoxelGrid::transformWindow(const Index3& low, const Index3& high) {
   constexpr float kInf = std::numeric_limits<float>::infinity();
-  // The transform runs over the window grown by the cap (clipped to the grid): a blocking cell
+  // The transform reads the window grown by the cap (clipped to the grid): a blocking cell
   // farther out cannot bring a cell of the window under the cap. Over the whole grid this is the
   // whole grid, and a window's values equal the whole grid's: exact squared cell distances.
   const Index3 reach = Index3::Constant(capCells());
   const Index3 from = (low - reach).cwiseMax(0);
   const Index3 to = (high + reach).cwiseMin(frame_.size - Index3::Ones());
   const int sx = to.x() - from.x() + 1, sy = to.y() - from.y() + 1, sz = to.z() - from.z() + 1;
-  std::vector<float> squared(static_cast<size_t>(sx) * sy * sz);
+  // Reused: a fresh buffer of up to the whole grid per rebuild was paid in page faults.
+  thread_local std::vector<float> squared;
+  squared.resize(static_cast<size_t>(sx) * sy * sz);
   size_t i = 0;
   for (int z = from.z(); z <= to.z(); ++z)
     for (int y = from.y(); y <= to.y(); ++y) {
       const size_t row = linear(Index3(from.x(), y, z));
-      for (int x = 0; x < sx; ++x, ++i) {
-        const CellState state = states_[row + x];
-        const bool blocks = state == CellState::Occupied ||
-                            (clearanceUnknownBlocks_ && state == CellState::Unknown);
-        squared[i] = blocks ? 0.0f : kInf;
-      }
+      for (int x = 0; x < sx; ++x, ++i)
+        squared[i] = blocksClearance(states_[row + x]) ? 0.0f : kInf;
     }
-  // Separable transform: x lines, then y, then z (squared cell distances).
+  // Separable transform: x lines, then y, then z (squared cell distances). A pass's lines are
+  // those the next passes read for the window's cells: every x line of the grown box, the y
+  // lines over the window's x only, the z lines over its x and y only (each line's result is
+  // the same whichever other lines are transformed).
   const int longest = std::max({sx, sy, sz});
   std::vector<float> line(longest), result(longest);
   std::vector<int> v;
   std::vector<float> cuts;
-  const auto pass = [&](int count, int stride, auto firstOf, int lines) {
-    for (int l = 0; l < lines; ++l) {
-      const size_t first = firstOf(l);
-      for (int q = 0; q < count; ++q)
-        line[q] = squared[first + static_cast<size_t>(q) * stride];
-      distanceTransform1d(line.data(), result.data(), count, v, cuts);
-      for (int q = 0; q < count; ++q)
-        squared[first + static_cast<size_t>(q) * stride] = result[q];
+  // A squared distance over the cap's (capCells()^2) reads as the cap in the end whatever it
+  // is, and one that large after a pass stays over it after the next: such values are made
+  // infinite between passes, lines with nothing finite or with only blocking cells are left as
+  // they are (their transform is themselves), and in open space most lines are one or the
+  // other. The values under the cap are the same exact squared distances.
+  const float over = static_cast<float>(capCells()) * static_cast<float>(capCells());
+  const auto transformLine = [&](size_t first, int count, size_t stride) {
+    bool anyFinite = false, allZero = true;
+    for (int q = 0; q < count; ++q) {
+      const float value = squared[first + q * stride];
+      line[q] = value;
+      anyFinite = anyFinite || value != kInf;
+      allZero = allZero && value == 0.0f;
     }
+    if (!anyFinite || allZero) return;
+    distanceTransform1d(line.data(), result.data(), count, v, cuts);
+    for (int q = 0; q < count; ++q)
+      squared[first + q * stride] = result[q] > over ? kInf : result[q];
   };
-  pass(
-      sx, 1, [&](int l) { return static_cast<size_t>(l) * sx; }, sy * sz);
-  pass(
-      sy, sx, [&](int l) { return static_cast<size_t>(l / sx) * sx * sy + l % sx; }, sx * sz);
-  pass(
-      sz, sx * sy, [&](int l) { return static_cast<size_t>(l); }, sx * sy);
+  const auto local = [&](int x, int y, int z) {
+    return (static_cast<size_t>(z - from.z()) * sy + (y - from.y())) * sx + (x - from.x());
+  };
+  for (int z = from.z(); z <= to.z(); ++z)
+    for (int y = from.y(); y <= to.y(); ++y)
+      transformLine(local(from.x(), y, z), sx, 1);
+  for (int z = from.z(); z <= to.z(); ++z)
+    for (int x = low.x(); x <= high.x(); ++x)
+      transformLine(local(x, from.y(), z), sy, static_cast<size_t>(sx));
+  for (int y = low.y(); y <= high.y(); ++y)
+    for (int x = low.x(); x <= high.x(); ++x)
+      transformLine(local(x, y, from.z()), sz, static_cast<size_t>(sx) * sy);
   const float capF = static_cast<float>(clearanceCap_);
   const float res = static_cast<float>(frame_.resolution);
   for (int z = low.z(); z <= high.z(); ++z)
     for (int y = low.y(); y <= high.y(); ++y) {
       const size_t row = linear(Index3(low.x(), y, z));
-      const size_t local =
-          (static_cast<size_t>(z - from.z()) * sy + (y - from.y())) * sx + (low.x() - from.x());
+      const size_t first = local(low.x(), y, z);
       for (int x = 0; x <= high.x() - low.x(); ++x)
-        clearance_[row + x] = std::min(capF, std::sqrt(squared[local + x]) * res);
+        clearance_[row + x] = std::min(capF, std::sqrt(squared[first + x]) * res);
     }
 }
 

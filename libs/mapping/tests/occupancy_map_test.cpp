@@ -35,6 +35,17 @@ Points floorAround(const Vec3& origin, double radius) {
   return points;
 }
 
+// One scan from (0.1, 0.2, 1.3): a 4 x 4 m wall at x = 6.25 and the floor around.
+OccupancyMap wallAndFloorMap() {
+  OccupancyMap map({0.5, 30.0});
+  const Vec3 origin(0.1, 0.2, 1.3);
+  Points scan = wallAt(6.25, origin, 2.0, 0.07);
+  for (const auto& p : floorAround(origin, 5.0))
+    scan.push_back(p);
+  map.insertScan(origin, scan);
+  return map;
+}
+
 // Every leaf as (key, log-odds), in key order: the whole content of a map.
 std::map<std::tuple<int, int, int>, float> leaves(const OccupancyMap& map) {
   std::map<std::tuple<int, int, int>, float> out;
@@ -363,12 +374,7 @@ TEST(OccupancyMap, VoxelGridAgreesWithStateAndTheLeafRule) {
 }
 
 TEST(OccupancyMap, ClearanceMatchesBruteForce) {
-  OccupancyMap map({0.5, 30.0});
-  const Vec3 origin(0.1, 0.2, 1.3);
-  Points scan = wallAt(6.25, origin, 2.0, 0.07);
-  for (const auto& p : floorAround(origin, 5.0))
-    scan.push_back(p);
-  map.insertScan(origin, scan);
+  const OccupancyMap map = wallAndFloorMap();
   std::vector<Vec3> occupied;
   const auto& tree = map.octree();
   for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it)
@@ -386,6 +392,59 @@ TEST(OccupancyMap, ClearanceMatchesBruteForce) {
     }
   }
   EXPECT_EQ(OccupancyMap().clearance(Vec3::Zero(), 2.5), 2.5);
+}
+
+// The changed centres bound exactly the cells whose state changed: every known cell after the
+// first scan, nothing after a repeat that changes no state, one cell after one observation.
+TEST(OccupancyMap, ChangedCentresBoundTheCellsWhoseStateChanged) {
+  OccupancyMap map({0.5, 30.0});
+  EXPECT_FALSE(map.takeChangedCentres());
+  const Vec3 origin(0.1, 0.2, 1.3);
+  const Points wall = wallAt(6.25, origin, 2.0, 0.07);
+  map.insertScan(origin, wall);
+  const auto first = map.takeChangedCentres();
+  ASSERT_TRUE(first);
+  Vec3 low = Vec3::Constant(1e9), high = Vec3::Constant(-1e9);
+  const auto& tree = map.octree();
+  for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it) {
+    const Vec3 c(it.getX(), it.getY(), it.getZ());
+    low = low.cwiseMin(c);
+    high = high.cwiseMax(c);
+  }
+  EXPECT_LT((first->first - low).norm(), 1e-9);
+  EXPECT_LT((first->second - high).norm(), 1e-9);
+  EXPECT_FALSE(map.takeChangedCentres());  // taken
+  map.insertScan(origin, wall);            // free stays free, occupied stays occupied
+  EXPECT_FALSE(map.takeChangedCentres());
+  map.observeCells({Vec3(-3.1, 2.2, 0.4)}, {});
+  const auto one = map.takeChangedCentres();
+  ASSERT_TRUE(one);
+  EXPECT_LT((one->first - Vec3(-3.25, 2.25, 0.25)).norm(), 1e-9);
+  EXPECT_LT((one->second - one->first).norm(), 1e-9);
+}
+
+// A part of a grid reads as the same cells of the whole grid, aligned with the map's cells or
+// not.
+TEST(OccupancyMap, PartOfAVoxelGridReadsAsTheSameCells) {
+  const OccupancyMap map = wallAndFloorMap();
+  for (const double resolution : {0.5, 1.0})
+    for (const Vec3& shift : {Vec3(0, 0, 0), Vec3(0.1, 0.2, 0.3)}) {
+      const Vec3 min = Vec3(-6.0, -6.0, -1.0) + shift;
+      const VoxelGrid whole = map.toVoxelGrid(min, min + Vec3(14.0, 12.0, 6.0), resolution);
+      const Index3 from(3, 2, 1), size(7, 5, 4);
+      const VoxelGrid part = map.toVoxelGrid(whole.frame(), from, from + size - Index3::Ones());
+      ASSERT_EQ(part.size(), size);
+      size_t known = 0;
+      for (int z = 0; z < size.z(); ++z)
+        for (int y = 0; y < size.y(); ++y)
+          for (int x = 0; x < size.x(); ++x) {
+            const Index3 cell(x, y, z);
+            ASSERT_EQ(part.state(cell), whole.state(cell + from))
+                << resolution << " " << x << y << z;
+            known += part.state(cell) != CellState::Unknown;
+          }
+      EXPECT_GT(known, 0U);
+    }
 }
 
 TEST(OccupancyMap, CellCentreMatchesTheOctreeCells) {

@@ -487,7 +487,9 @@ std::vector<uint8_t> reachableCells(const VoxelGrid& grid, const Vec3& start,
   std::vector<uint8_t> reached(grid.cellCount(), 0);
   Index3 first;
   if (!nearestTraversableCell(grid, start, options.snapRadius, options, &first)) return reached;
-  std::vector<Index3> queue{first};
+  // Reused: a flood of a whole grid grew a fresh queue of up to millions of cells per call.
+  thread_local std::vector<Index3> queue;
+  queue.assign(1, first);
   reached[grid.linear(first)] = 1;
   static const Index3 kFaces[6] = {Index3(1, 0, 0),  Index3(-1, 0, 0), Index3(0, 1, 0),
                                    Index3(0, -1, 0), Index3(0, 0, 1),  Index3(0, 0, -1)};

@@ -183,7 +183,8 @@ void RobotMap::openColumn(const Vec3& bottom, double height, double radius) {
         if ((grid_.centre(cell) - bottom).head<2>().norm() <= radius + 0.5 * res)
           (*blockUnknown_)[grid_.linear(cell)] = 0;
       }
-  builtRevision_ = ~uint64_t{0};  // rebuild at the next refresh
+  builtRevision_ = ~uint64_t{0};  // rebuild at the next refresh, every cell
+  readAll_ = true;
 }
 
 bool RobotMap::refresh(double time, bool force) {
@@ -196,32 +197,43 @@ bool RobotMap::refresh(double time, bool force) {
 
 void RobotMap::rebuild() {
   builtRevision_ = map_.revision();
-  mapping::VoxelGrid snapshot =
-      map_.knownCount() == 0
-          ? mapping::VoxelGrid(grid_.origin(), grid_.resolution(), grid_.size())
-          : map_.toVoxelGrid(grid_.origin(),
-                             grid_.origin() + grid_.size().cast<double>() * grid_.resolution(),
-                             grid_.resolution());
-  COINSPECT_ASSERT(snapshot.size() == grid_.size());
-  // Same linear layout in both grids (same origin, resolution and size): z, then y, then x.
-  // The clearance field is then brought up to date around the cells that changed only: a scan
-  // changes a few metres around the robot, and a transform of the whole grid every rebuild was
-  // most of a mission's computing.
-  size_t i = 0;
+  const auto changed = map_.takeChangedCentres();
+  // The cells read again from the map: every cell at the first build and after openColumn (the
+  // blocking zone changed), else those holding a map cell whose state changed, plus one cell of
+  // margin against rounding (the others would read what they read last time). Copying the whole
+  // octree into the grid at every rebuild was most of a rebuild's cost, page faults included.
   const mapping::Index3 size = grid_.size();
+  mapping::Index3 from = mapping::Index3::Zero(), to = size - mapping::Index3::Ones();
+  if (!readAll_) {
+    if (changed) {
+      from = (grid_.cellOf(changed->first) - mapping::Index3::Ones()).cwiseMax(from);
+      to = (grid_.cellOf(changed->second) + mapping::Index3::Ones()).cwiseMin(to);
+    } else {
+      to = from - mapping::Index3::Ones();  // nothing
+    }
+  }
+  readAll_ = false;
+  // The clearance field is then brought up to date around the cells whose blocking changed
+  // only: a scan changes a few metres around the robot, and a transform of the whole grid every
+  // rebuild was most of a mission's computing.
   mapping::Index3 low = size, high = mapping::Index3::Constant(-1);
-  for (int z = 0; z < size.z(); ++z)
-    for (int y = 0; y < size.y(); ++y)
-      for (int x = 0; x < size.x(); ++x, ++i) {
-        const mapping::Index3 cell(x, y, z);
-        mapping::CellState state = snapshot.state(cell);
-        if (state == mapping::CellState::Unknown && !(*blockUnknown_)[i])
-          state = mapping::CellState::Free;
-        if (state == grid_.state(cell)) continue;
-        grid_.set(cell, state);
-        low = low.cwiseMin(cell);
-        high = high.cwiseMax(cell);
-      }
+  if ((from.array() <= to.array()).all()) {
+    const mapping::VoxelGrid snapshot = map_.toVoxelGrid(grid_.frame(), from, to);
+    for (int z = from.z(); z <= to.z(); ++z)
+      for (int y = from.y(); y <= to.y(); ++y)
+        for (int x = from.x(); x <= to.x(); ++x) {
+          const mapping::Index3 cell(x, y, z);
+          mapping::CellState state = snapshot.state(cell - from);
+          if (state == mapping::CellState::Unknown && !(*blockUnknown_)[grid_.linear(cell)])
+            state = mapping::CellState::Free;
+          const mapping::CellState before = grid_.state(cell);
+          if (state == before) continue;
+          grid_.set(cell, state);
+          if (grid_.blocksClearance(state) == grid_.blocksClearance(before)) continue;
+          low = low.cwiseMin(cell);
+          high = high.cwiseMax(cell);
+        }
+  }
   if (grid_.hasClearance())
     grid_.updateClearance(low, high);
   else

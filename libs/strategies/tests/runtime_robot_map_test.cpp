@@ -89,5 +89,66 @@ TEST(RobotMap, SurfaceNearBoxesKeepsMappedStructureInABoxNotTheGroundNorStructur
   EXPECT_GT(map.surfaceNearBoxes(boxes, 5.0).size(), near.size());
 }
 
+// A rebuild reads again only the cells where the map changed and transforms the clearance
+// only around the cells whose blocking changed; after every rebuild the grid must equal one read
+// whole from the map (unknown cells as the blocking zone left them) with the whole transform.
+TEST(RobotMap, GridRebuiltWhereTheMapChangedEqualsAGridReadWhole) {
+  const std::vector<BoxView> boxes = {makeBox(Vec3(12, 0, 5), Vec3(6, 10, 10))};
+  for (const double gridResolution : {0.5, 1.0}) {
+    RobotMapOptions options;
+    options.mapResolution = 0.5;
+    options.gridResolution = gridResolution;
+    RobotMap map(options, boxes, 0.0);
+    const mapping::VoxelGrid zone = map.grid();  // no scan yet: unknown where it stays blocked
+    const auto check = [&](int step) {
+      const mapping::VoxelGrid& grid = map.grid();
+      const mapping::VoxelGrid read = map.map().toVoxelGrid(
+          grid.origin(), grid.origin() + grid.size().cast<double>() * grid.resolution(),
+          grid.resolution());
+      EXPECT_EQ(read.size(), grid.size());
+      mapping::VoxelGrid expected = read;
+      for (int z = 0; z < grid.size().z(); ++z)
+        for (int y = 0; y < grid.size().y(); ++y)
+          for (int x = 0; x < grid.size().x(); ++x) {
+            const mapping::Index3 cell(x, y, z);
+            if (read.state(cell) == mapping::CellState::Unknown)
+              expected.set(cell, zone.state(cell));
+          }
+      expected.computeClearance(options.clearanceCap, true);
+      size_t changed = 0, wrong = 0;
+      for (int z = 0; z < grid.size().z(); ++z)
+        for (int y = 0; y < grid.size().y(); ++y)
+          for (int x = 0; x < grid.size().x(); ++x) {
+            const mapping::Index3 cell(x, y, z);
+            const bool same = grid.state(cell) == expected.state(cell) &&
+                              grid.clearance(cell) == expected.clearance(cell);
+            if (!same && wrong++ == 0)
+              ADD_FAILURE() << gridResolution << " step " << step << " cell " << cell.transpose();
+            changed += grid.state(cell) != zone.state(cell);
+          }
+      EXPECT_EQ(wrong, 0U) << gridResolution << " step " << step;
+      return changed;
+    };
+    // The same walls and ground seen from three places, then nothing new.
+    size_t changedBefore = 0;
+    const Vec3 offsets[] = {Vec3(0, 0, 0), Vec3(-2, 3, 2), Vec3(1, -4, -1), Vec3(1, -4, -1)};
+    for (int step = 0; step < 4; ++step) {
+      agent::KeyFrame frame = wallsAndGround();
+      frame.position += offsets[step];
+      if (step > 0)
+        for (auto& p : frame.points)
+          p += Eigen::Vector3f(0.0f, 0.5f * static_cast<float>(step), 0.0f);
+      map.insertFrame(frame);
+      ASSERT_TRUE(map.refresh(10.0 * (step + 1), true));
+      const size_t changed = check(step);
+      EXPECT_GE(changed, changedBefore);
+      if (step < 3) {
+        EXPECT_GT(changed, changedBefore) << "step " << step << " changed nothing";
+      }
+      changedBefore = changed;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace coinspect::strategies::runtime

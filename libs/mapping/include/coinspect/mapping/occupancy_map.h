@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -90,6 +91,14 @@ class OccupancyMap {
   // path search; a dense cell is Occupied if any map leaf inside it is, else Free if any is, else
   // Unknown.
   VoxelGrid toVoxelGrid(const Vec3& min, const Vec3& max, double resolution) const;
+  // The cells [from, to] (inclusive, inside `whole`) of a grid of frame `whole`, as a grid of
+  // their own (its cell c is the whole grid's from + c): each reads as in the whole grid, at
+  // the cost of the part only.
+  VoxelGrid toVoxelGrid(const GridFrame& whole, const Index3& from, const Index3& to) const;
+  // The bounds of the centres of the map cells whose state changed (unknown to known, free to
+  // occupied or back) since the last call, which forgets them; nothing when none did. Grids
+  // derived from the map need to be read again there only.
+  std::optional<std::pair<Vec3, Vec3>> takeChangedCentres();
 
   // Free cells with an unknown face neighbour inside [min, max], grouped by 26-connectivity into
   // clusters of at least `minClusterSize` cells; deterministic order.

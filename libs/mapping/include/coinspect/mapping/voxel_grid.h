@@ -69,6 +69,11 @@ class VoxelGrid {
   // values equal those of computeClearance() with the same arguments. Requires computeClearance().
   void updateClearance(const Index3& low, const Index3& high);
   bool hasClearance() const { return !clearance_.empty(); }
+  // Whether a cell in `state` blocks the clearance field (as computeClearance() was told): a
+  // change between two states that both block, or both do not, leaves the field as it is.
+  bool blocksClearance(CellState state) const {
+    return state == CellState::Occupied || (clearanceUnknownBlocks_ && state == CellState::Unknown);
+  }
   // Distance (m) to the nearest blocking cell centre; 0 on blocking cells, `cap` when none is
   // nearer. Cells outside the grid: 0. Requires computeClearance().
   float clearance(const Index3& cell) const {

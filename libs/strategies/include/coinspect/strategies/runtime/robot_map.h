@@ -109,6 +109,7 @@ class RobotMap {
   std::shared_ptr<std::vector<uint8_t>> blockUnknown_;
   uint64_t gridVersion_ = 0;
   uint64_t builtRevision_ = 0;
+  bool readAll_ = true;  // the next rebuild reads every cell from the map, not the changed ones
   double lastRebuild_ = -1e300;
   size_t sweepCounter_ = 0;
   double lastSweepTime_ = -1.0;
