@@ -10,6 +10,14 @@
 namespace coinspect::mapping {
 namespace {
 
+// A small deterministic generator: next(n) draws an int in [0, n).
+auto randomBelow(uint32_t seed) {
+  return [seed](int below) mutable {
+    seed = seed * 1664525u + 1013904223u;
+    return static_cast<int>((seed >> 8) % static_cast<uint32_t>(below));
+  };
+}
+
 TEST(VoxelGrid, CellOfAndCentreAreInverse) {
   const VoxelGrid grid(Vec3(-2.0, 1.0, 0.5), 0.5, Index3(8, 6, 4));
   const Index3 cell(3, 2, 1);
@@ -52,11 +60,7 @@ TEST(VoxelGrid, NothingBlockingGivesTheCap) {
 // updateClearance after random edits inside a box equals a transform of the whole grid, value
 // for value (the planners' grids are updated this way; any difference would change missions).
 TEST(VoxelGrid, UpdatedClearanceEqualsTheWholeTransform) {
-  uint32_t seed = 12345;
-  const auto next = [&seed](int below) {
-    seed = seed * 1664525u + 1013904223u;
-    return static_cast<int>((seed >> 8) % static_cast<uint32_t>(below));
-  };
+  auto next = randomBelow(12345);
   const Index3 size(40, 30, 20);
   // Sparse blockers, so that many clearances lie near the cap, where a too small update
   // window shows.
@@ -94,11 +98,7 @@ TEST(VoxelGrid, UpdatedClearanceEqualsTheWholeTransform) {
 // random edits, every value equals the capped brute-force distance (the transform drops values
 // over the cap between its passes and transforms only the lines the window needs).
 TEST(VoxelGrid, CappedClearanceMatchesBruteForceAfterUpdates) {
-  uint32_t seed = 777;
-  const auto next = [&seed](int below) {
-    seed = seed * 1664525u + 1013904223u;
-    return static_cast<int>((seed >> 8) % static_cast<uint32_t>(below));
-  };
+  auto next = randomBelow(777);
   const Index3 size(30, 24, 16);
   const double resolution = 0.25, cap = 1.3;
   VoxelGrid grid(Vec3(1.0, -2.0, 0.5), resolution, size, CellState::Free);
