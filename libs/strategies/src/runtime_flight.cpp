@@ -217,6 +217,7 @@ agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const Robo
   const Vec3 me = view.odometry.position;
   const size_t myPriority = self_;
   Vec3 escape = Vec3::Zero();
+  bool tooClose = false;  // a neighbour within minSeparation
   for (const auto& neighbour : view.neighbours) {
     if (neighbour.role == agent::Role::GroundStation) continue;
     const Vec3 other = neighbour.odometry.position;
@@ -225,6 +226,7 @@ agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const Robo
     const bool ranked = priorityOf(neighbour.name) < myPriority;
     const bool higher = ranked && !standGround_;
     if (distance < options_.minSeparation) {
+      tooClose = true;
       Vec3 away = distance > 1e-6 ? Vec3(offset / distance) : Vec3::UnitZ();
       if (!ranked)
         away.z() -= 0.5;  // the higher-priority unit dips, the other climbs
@@ -315,13 +317,33 @@ agent::AgentSetpoint Flight::deconflict(const agent::AgentView& view, const Robo
   // near a wall creep with its own drift for good: slei-c, scene seed 1, an inspector backing
   // off from a teammate slid 3 m in 290 s into a structure.
   out.position = phase_ == Phase::Flying ? me : setpoint.position;
-  for (const Vec3& direction : directions) {
-    const Vec3 target = me + 1.5 * direction;
-    if (clearOfNeighbours(target) && planning::segmentTraversable(grid, me, target, options)) {
-      out.position = target;
-      break;
+  // Where a step may end, in order of preference: at the clearance paths keep; no closer to
+  // mapped surfaces than the unit already is; and, only with a neighbour within minSeparation,
+  // anywhere its own sphere fits. Backing off 1.5 m at a time toward a roof it was under took
+  // a unit to 0.2 m below an eave not mapped yet (slei-a, scene seed 4: it hit the eave as it
+  // was seen).
+  const auto full = searchOptions(grid);
+  const float clearanceHere = grid.clearance(grid.cellOf(me));
+  const auto acceptable = [&](const Vec3& target, int pass) {
+    const auto cell = grid.cellOf(target);
+    if (pass == 0) return planning::cellTraversable(grid, cell, full);
+    if (pass == 1) return grid.clearance(cell) >= clearanceHere;
+    return true;
+  };
+  bool stepped = false;
+  for (int pass = 0; pass < (tooClose ? 3 : 2) && !stepped; ++pass)
+    for (const Vec3& direction : directions) {
+      // Never against the escape: stepping up, then down when up was blocked, then up again
+      // kept a unit bobbing beside a neighbour it could not get away from.
+      if (direction.dot(escape) < -1e-9) continue;
+      const Vec3 target = me + 1.5 * direction;
+      if (acceptable(target, pass) && clearOfNeighbours(target) &&
+          planning::segmentTraversable(grid, me, target, options)) {
+        out.position = target;
+        stepped = true;
+        break;
+      }
     }
-  }
   // The unit stays where it backed off to: flying back to the reference point it had brought the
   // two units together again (caric-baseline, generated mbs, seed 2). A flight plans again from
   // there.
@@ -361,6 +383,21 @@ agent::AgentSetpoint Flight::bounded(const Vec3& position, const RobotMap& map,
     lastAttempt_ = kNever;
   }
   return setpoint;
+}
+
+void Flight::keepHoverPointClear(const Vec3& position, const RobotMap& map) {
+  if (map.gridVersion() == hoverCheckedVersion_) return;
+  hoverCheckedVersion_ = map.gridVersion();
+  const auto& grid = map.grid();
+  const auto options = ownSphereOptions(grid);
+  // A vehicle in a cell that is itself blocked (unknown space near a box it waits by) keeps its
+  // point: holding "where it is" would follow its drift.
+  if (!planning::cellTraversable(grid, grid.cellOf(position), options) ||
+      planning::segmentTraversable(grid, position, hoverPoint_, options))
+    return;
+  // New map information blocks the point or the way to it: hover where the vehicle is.
+  hoverPoint_ = position;
+  reachedGoal_.reset();
 }
 
 void Flight::dropReachedWaypoints() {
@@ -404,6 +441,7 @@ agent::AgentSetpoint Flight::step(const agent::AgentView& view, const RobotMap& 
         }
       }
       if (phase_ != Phase::Flying) {
+        keepHoverPointClear(position, map);
         setpoint.position = hoverPoint_;
         break;
       }
@@ -447,6 +485,7 @@ agent::AgentSetpoint Flight::step(const agent::AgentView& view, const RobotMap& 
       return bounded(position, map, setpoint);
     }
     case Phase::Idle:
+      keepHoverPointClear(position, map);
       setpoint.position = hoverPoint_;
       break;
   }

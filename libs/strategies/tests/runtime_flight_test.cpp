@@ -461,6 +461,69 @@ TEST(Flight, HoldsItsPointWhenItCannotBackOffFromAHigherPriorityNeighbour) {
   EXPECT_LT((units.vehicle.view.odometry.position - hold).norm(), drift.norm() + 1e-9);
 }
 
+// Points every 0.25 m on the rectangle spanned by `side1` and `side2` from `corner`, as a key
+// frame seen from `origin`, inserted into the units' map.
+void addSurface(TwoUnits* units, const Vec3& origin, const Vec3& corner, const Vec3& side1,
+                const Vec3& side2) {
+  auto frame = std::make_shared<agent::KeyFrame>();
+  frame->producer = "scout";
+  frame->position = origin;
+  for (double a = 0.0; a <= 1.0 + 1e-9; a += 0.25 / side1.norm())
+    for (double b = 0.0; b <= 1.0 + 1e-9; b += 0.25 / side2.norm())
+      frame->points.push_back((corner + a * side1 + b * side2).cast<float>());
+  agent::AgentView scan;
+  scan.receivedKeyFrames.push_back(frame);
+  units->map.update(scan);
+  units->map.refresh(units->vehicle.view.time, true);
+}
+
+TEST(Flight, BacksOffAlongASurfaceRatherThanTowardAnother) {
+  // slei-a, scene seed 4: an explorer backing off from a higher-priority one, its way away
+  // blocked by a hall, stepped up under the hall's roof and then down, again and again; one
+  // step up left it 0.2 m under an eave not mapped yet, which it hit as it was seen.
+  TwoUnits units({20, 40, 6}, 1);
+  ASSERT_TRUE(units.flight.done());
+  const Vec3 here = units.vehicle.view.odometry.position;  // (0, 22, 5)
+  const double ceiling = here.z() + 2.6;
+  // A wall 1.7 m away in the direction away from the neighbour, a ceiling 2.6 m above.
+  addSurface(&units, here, Vec3(-10, here.y() + 1.7, 0), Vec3(20, 0, 0), Vec3(0, 0, 12));
+  addSurface(&units, here, Vec3(-10, here.y() - 10, ceiling), Vec3(20, 0, 0), Vec3(0, 11.7, 0));
+  const Vec3 other = here + Vec3(0, -3, 0);
+  units.addOther(other);  // higher priority
+  double below = ceiling - here.z();
+  for (int i = 0; i < 60; ++i) {
+    units.step();
+    below = std::min(below, ceiling - units.vehicle.view.odometry.position.z());
+  }
+  // Along the wall, not up toward the ceiling (the step up is clear of its own sphere), and out
+  // to `separation` all the same.
+  EXPECT_GE(below, ceiling - here.z() - 1e-9);
+  EXPECT_GE((units.vehicle.view.odometry.position - other).norm(), TwoUnits::options().separation);
+}
+
+TEST(Flight, AHoverPointNewMapInformationBlocksBecomesWhereTheVehicleIs) {
+  // The same explorer: its hover point was 0.2 m under the eave when the eave was mapped, 0.3 s
+  // before the vehicle, climbing to it, hit it.
+  TwoUnits units({20, 40, 6}, 1);
+  ASSERT_TRUE(units.flight.done());
+  const Vec3 hover = units.vehicle.view.odometry.position;
+  units.vehicle.view.odometry.position = hover - Vec3(0, 0, 1.5);  // still climbing to it
+  units.step();
+  EXPECT_LT((units.vehicle.view.odometry.position - hover).norm(), 1e-9);  // flies to it
+  units.vehicle.view.odometry.position = hover - Vec3(0, 0, 1.5);
+  // A roof 0.2 m above the hover point.
+  addSurface(&units, hover - Vec3(0, 0, 1.5), hover + Vec3(-5, -5, 0.2), Vec3(10, 0, 0),
+             Vec3(0, 10, 0));
+  units.step();
+  EXPECT_LT((units.vehicle.view.odometry.position - (hover - Vec3(0, 0, 1.5))).norm(), 1e-9);
+  // Later map updates leave that point alone (it is clear): no following the vehicle's drift.
+  const Vec3 held = units.vehicle.view.odometry.position;
+  addSurface(&units, held, held + Vec3(-5, 20, -5), Vec3(10, 0, 0), Vec3(0, 0, 10));
+  units.vehicle.view.odometry.position += Vec3(0.1, 0, 0);
+  units.step();
+  EXPECT_LT((units.vehicle.view.odometry.position - held).norm(), 1e-9);
+}
+
 TEST(Flight, AStepAwayFromOneNeighbourDoesNotTakeItIntoAnother) {
   // 75 robots on slei-a (5 stations, 10 explorers, 60 inspectors 3 m apart): an inspector
   // backing off from a higher-priority one stepped into a lower-priority one, and both died 9 s

@@ -14,10 +14,12 @@
 // order: the lower index goes first): a unit holds while a higher-priority neighbour is within
 // `separation` of its next few metres of path and backs off to `separation` from it (after
 // `yieldPatience` it plans around one that stays where it is: a unit waiting at its post held
-// another for good), and every
-// unit closer than `minSeparation` to a neighbour backs away from it (the lower-priority one also
-// climbs); a unit stays where it backed off to (flying back to its reference point brought two
-// units together again). Having the right of way does not mean flying into a unit that holds on
+// another for good), and every unit closer than `minSeparation` to a neighbour backs away from
+// it (the lower-priority one also climbs); a unit stays where it backed off to (flying back to
+// its reference point brought two units together again). A step back ends, by preference, where
+// the unit has the clearance paths keep, else no closer to mapped surfaces than it is, and only
+// with a neighbour within minSeparation anywhere its own sphere fits; never against the way away
+// from its neighbours. Having the right of way does not mean flying into a unit that holds on
 // the path: a unit does not advance while its next `lookahead` metres would bring it closer than
 // minSeparation + radius to a lower-priority neighbour within `separation` (nor closer than it
 // already is), and after `yieldPatience` it plans around the neighbours still in its way.
@@ -26,7 +28,8 @@
 // so a setpoint far from the vehicle would be reached along a line nobody checked. Every setpoint
 // after take-off is therefore kept within `maxSetpointOffset` of the vehicle, and one whose
 // straight line from the vehicle is not clear becomes a hold where the vehicle is (a flight then
-// plans again from there).
+// plans again from there). A hover point that a new grid blocks (or the straight way to it)
+// becomes where the vehicle is.
 #pragma once
 
 #include <limits>
@@ -120,6 +123,9 @@ class Flight {
   // searchOptions, clear of the vehicle's own sphere only: for short straight moves (a guarded
   // setpoint, a step away from a neighbour), not for planned paths.
   planning::PathSearchOptions ownSphereOptions(const mapping::VoxelGrid& grid) const;
+  // At each new grid: a hover point (or the straight way to it) that new map information
+  // blocks at the vehicle's own sphere moves to where the vehicle is, when that is clear.
+  void keepHoverPointClear(const Vec3& position, const RobotMap& map);
   agent::AgentSetpoint bounded(const Vec3& position, const RobotMap& map,
                                agent::AgentSetpoint setpoint);
 
@@ -139,6 +145,7 @@ class Flight {
   double speed_ = 1.0;
   PathProfile profile_;
   uint64_t checkedGridVersion_ = 0;
+  uint64_t hoverCheckedVersion_ = 0;  // the grid keepHoverPointClear last checked against
   double lastAttempt_ = -1e300;
   int failures_ = 0;
   // Since when lower-priority units hold this unit up (-inf: they do not).
