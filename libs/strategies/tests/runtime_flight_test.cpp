@@ -414,6 +414,22 @@ TEST(Flight, HigherPriorityStopsShortOfALowerPriorityUnitInItsWayThenGoesAround)
   EXPECT_FALSE(units.flight.failed());
 }
 
+// Points every 0.25 m on the rectangle spanned by `side1` and `side2` from `corner`, as a key
+// frame seen from `origin`, inserted into the units' map.
+void addSurface(TwoUnits* units, const Vec3& origin, const Vec3& corner, const Vec3& side1,
+                const Vec3& side2) {
+  auto frame = std::make_shared<agent::KeyFrame>();
+  frame->producer = "scout";
+  frame->position = origin;
+  for (double a = 0.0; a <= 1.0 + 1e-9; a += 0.25 / side1.norm())
+    for (double b = 0.0; b <= 1.0 + 1e-9; b += 0.25 / side2.norm())
+      frame->points.push_back((corner + a * side1 + b * side2).cast<float>());
+  agent::AgentView scan;
+  scan.receivedKeyFrames.push_back(frame);
+  units->map.update(scan);
+  units->map.refresh(units->vehicle.view.time, true);
+}
+
 TEST(Flight, BacksOffFromAHigherPriorityNeighbourEvenWithinItsMarginsOfASurface) {
   // slei-a, scene seed 2: two inspectors waiting within their path margins of mapped surface
   // could not step away from an explorer (the step was checked with those margins from a cell
@@ -423,16 +439,7 @@ TEST(Flight, BacksOffFromAHigherPriorityNeighbourEvenWithinItsMarginsOfASurface)
   const Vec3 here = units.vehicle.view.odometry.position;  // (0, 22, 5)
   // A wall appears 1.2 m away: more than the unit's radius and half a cell, less than the
   // clearance paths keep.
-  auto frame = std::make_shared<agent::KeyFrame>();
-  frame->producer = "scout";
-  frame->position = Vec3(-6, 22, 6);
-  for (double y = 14.0; y <= 30.0; y += 0.25)
-    for (double z = 0.0; z <= 12.0; z += 0.25)
-      frame->points.emplace_back(1.2f, static_cast<float>(y), static_cast<float>(z));
-  agent::AgentView scan;
-  scan.receivedKeyFrames.push_back(frame);
-  units.map.update(scan);
-  units.map.refresh(units.vehicle.view.time, true);
+  addSurface(&units, Vec3(-6, 22, 6), Vec3(1.2, 14, 0), Vec3(0, 16, 0), Vec3(0, 0, 12));
   const auto& grid = units.map.grid();
   ASSERT_LT(grid.clearance(grid.cellOf(here)), units.flight.requiredClearance(grid));
   units.addOther(here + Vec3(0, 3, 0));  // higher priority, 3 m away along the wall
@@ -459,22 +466,6 @@ TEST(Flight, HoldsItsPointWhenItCannotBackOffFromAHigherPriorityNeighbour) {
   }
   // A perfect vehicle sits where it was told to plus one decision's drift.
   EXPECT_LT((units.vehicle.view.odometry.position - hold).norm(), drift.norm() + 1e-9);
-}
-
-// Points every 0.25 m on the rectangle spanned by `side1` and `side2` from `corner`, as a key
-// frame seen from `origin`, inserted into the units' map.
-void addSurface(TwoUnits* units, const Vec3& origin, const Vec3& corner, const Vec3& side1,
-                const Vec3& side2) {
-  auto frame = std::make_shared<agent::KeyFrame>();
-  frame->producer = "scout";
-  frame->position = origin;
-  for (double a = 0.0; a <= 1.0 + 1e-9; a += 0.25 / side1.norm())
-    for (double b = 0.0; b <= 1.0 + 1e-9; b += 0.25 / side2.norm())
-      frame->points.push_back((corner + a * side1 + b * side2).cast<float>());
-  agent::AgentView scan;
-  scan.receivedKeyFrames.push_back(frame);
-  units->map.update(scan);
-  units->map.refresh(units->vehicle.view.time, true);
 }
 
 TEST(Flight, BacksOffAlongASurfaceRatherThanTowardAnother) {
