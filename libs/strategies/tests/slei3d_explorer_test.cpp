@@ -41,6 +41,8 @@ struct Run {
   // m, horizontal, from box 0's footprint corners nearest to and farthest from the start, at
   // least 1 m above the box.
   double closestOverNearCorner = 1e300, closestOverFarCorner = 1e300;
+  // m/s, the slowest setpoint within 0.5 m of that near corner (over it, as above).
+  double slowestOverNearCorner = 1e300;
 };
 
 Vec3 cornerOf(size_t box) {
@@ -105,6 +107,9 @@ Run fly(const Config& config, int32_t reserved, double until, std::vector<Meetin
     if (at.z() > 5.0) {
       run.closestOverNearCorner =
           std::min(run.closestOverNearCorner, (at.head<2>() - Eigen::Vector2d(-2, 8)).norm());
+      if ((at.head<2>() - Eigen::Vector2d(-2, 8)).norm() < 0.5 && command.setpoint)
+        run.slowestOverNearCorner =
+            std::min(run.slowestOverNearCorner, command.setpoint->velocity.norm());
       run.closestOverFarCorner =
           std::min(run.closestOverFarCorner, (at.head<2>() - Eigen::Vector2d(2, 12)).norm());
     }
@@ -166,6 +171,19 @@ TEST(Slei3dExplorer, BeforeItsBoxIsDoneItFliesOverItCornerToCorner) {
   EXPECT_LT(pass.closestOverFarCorner, 0.5);
   const auto none = fly(Config::fromText("[slei3d]\nroof_pass = false\n", "run.ini"), -1, 60.0);
   EXPECT_LT(none.highest, 3.5);
+}
+
+// The roof pass's two corners are two stops of its sweep: it flies through the near corner at
+// the turn's speed (`sweep_through`); one stop at a time it brakes to a halt over it.
+TEST(Slei3dExplorer, WithSweepThroughItPassesAStopWithoutHalting) {
+  const auto through = fly(Config::fromText("", "run.ini"), -1, 60.0);
+  const auto stops =
+      fly(Config::fromText("[slei3d]\nsweep_through = false\n", "run.ini"), -1, 60.0);
+  ASSERT_LT(stops.closestOverNearCorner, 0.5);
+  ASSERT_LT(through.closestOverNearCorner, 0.5);
+  EXPECT_LT(through.closestOverFarCorner, 0.5);
+  EXPECT_LT(stops.slowestOverNearCorner, 0.05);
+  EXPECT_GT(through.slowestOverNearCorner, 0.3);
 }
 
 // The sequence numbers of the orders e1 (slei3d) sends i1 (its one inspector, always in sight)
@@ -379,9 +397,10 @@ struct HandoutTiming {
 };
 
 // e1 detects feature 7 at 2 s with i1 in sight; at `resultAt` s (if >= 0) it receives 7's
-// inspection result (from another subgroup, through the station).
-HandoutTiming handoutWhileExploring(const Config& config, bool highPriority,
-                                    double resultAt = -1.0) {
+// inspection result (from another subgroup, through the station). With `reserveNext`, a reply at
+// 1 s (as if met on the way) keeps box 0 and reserves box 1 after it.
+HandoutTiming handoutWhileExploring(const Config& config, bool highPriority, double resultAt = -1.0,
+                                    bool reserveNext = false) {
   auto explorer = makeExplorer(
       config, "slei3d",
       {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}, {"i1", Role::Photographer}});
@@ -395,6 +414,15 @@ HandoutTiming handoutWhileExploring(const Config& config, bool highPriority,
     view.time = step * 0.1;
     view.messages.clear();
     if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
+    if (step == 10 && reserveNext) {
+      Reply reply;
+      reply.meetingNumber = 1;
+      reply.box = 0;
+      reply.next = {cornerOf(0), 400.0};
+      reply.stops = {reply.next};
+      reply.nextBox = 1;
+      view.messages.push_back({"gcs", kReplyTopic, encode(reply)});
+    }
     view.neighbours = {inspector};
     view.detectedFeatures.clear();
     view.receivedResults.clear();
@@ -429,6 +457,28 @@ TEST(Slei3dExplorer, WithHandoutAtBoxEndItHandsOutOnlyOnceItsBoxIsExplored) {
   EXPECT_LT(soei.firstOrders, held.roofPassEnd);
   EXPECT_GE(held.firstOrders, held.roofPassEnd);
   EXPECT_LT(urgent.firstOrders, held.roofPassEnd);
+}
+
+// In its last box (no next box reserved) it holds what it finds only `last_box_hold` s: the
+// feature found at 2 s goes out before the box is explored (where it goes out when held to the
+// box's end). With a next box reserved it is held to the box's end all the same.
+TEST(Slei3dExplorer, InItsLastBoxItHandsOutWhatItHeldTooLong) {
+  const auto config = [](const char* hold) {
+    return Config::fromText(
+        std::string("[slei3d]\nhandout_at_box_end = true\nlast_box_hold = ") + hold + "\n",
+        "run.ini");
+  };
+  const auto held = handoutWhileExploring(config("0"), false);
+  const auto released = handoutWhileExploring(config("5"), false);
+  const auto reserved = handoutWhileExploring(config("5"), false, -1.0, true);
+  ASSERT_GT(held.roofPassEnd, 0.0);
+  ASSERT_GT(held.firstOrders, 0.0);
+  EXPECT_GE(held.firstOrders, held.roofPassEnd);
+  ASSERT_GT(released.firstOrders, 0.0);
+  EXPECT_GE(released.firstOrders, 7.0);
+  EXPECT_LT(released.firstOrders, held.firstOrders);
+  ASSERT_GT(reserved.roofPassEnd, 0.0);
+  EXPECT_GE(reserved.firstOrders, reserved.roofPassEnd);
 }
 
 // A feature whose result it carries is not handed out: neither one detected after the result

@@ -100,6 +100,13 @@ struct SleiOptions {
   // announces a new box to them, and for high-priority features): it never breaks off its
   // exploring, and the inspectors work a box behind it, away from its sweep.
   bool handoutAtBoxEnd = false;
+  // s: with `handout_at_box_end`, in its last box (the station reserved none after it) an
+  // explorer hands out the features it has held this long (`[slei3d] last_box_hold`; 0: held to
+  // the box's end there too). No next box waits for it, and the inspectors are idle.
+  double lastBoxHold = 100.0;
+  // `[slei3d] sweep_through`: the flight is given the sweep's next two stops, so that it passes
+  // a stop at its turn's speed instead of braking to a halt there (off: one stop at a time).
+  bool sweepThrough = true;
   // s, longest time to the next station meeting. The reference clamps eq. 9 at 600 s; with the
   // next box reserved an explorer done early no longer waits that long, and the lead only bounds
   // how long its results and the station's plan go unexchanged: 200 s collected 124.7 features
@@ -206,6 +213,7 @@ class Slei3dStrategy : public agent::Strategy {
   Plan planExploration(const agent::AgentView& view);
   void markSwept(const agent::AgentView& view);
   void followSweep(const agent::AgentView& view);
+  void flySweep();  // to the sweep's next stop (with sweep_through, on through the one after)
   void planHandout(const agent::AgentView& view);
   double predictRemaining(const agent::AgentView& view) const;
   void enterBox(const agent::AgentView& view, int32_t box);
@@ -326,6 +334,9 @@ class Slei3dStrategy : public agent::Strategy {
   std::vector<Vec3> roofPass_;  // the roof pass's stops still to fly in the box
   std::vector<planning::InspectionPatch> openList_;
   std::vector<SweepStop> sweepRoute_;
+  // s, since when features have been pending, as seen at the hand-out decisions (-1: none
+  // pending at the last one)
+  double heldSince_ = -1.0;
   double atStopSince_ = -1.0;  // reached the current stop then (-1: not yet)
   bool toFrontier_ = false;    // flying to a frontier viewpoint, not a sweep stop
   size_t openPatches_ = 0;     // in the box at the last plan
