@@ -105,9 +105,9 @@ Run fly(const Config& config, int32_t reserved, double until, std::vector<Meetin
         std::min(run.closestToSecondBox, (at - kBoxes[1].center).head<2>().norm());
     run.highest = std::max(run.highest, at.z());
     if (at.z() > 5.0) {
-      run.closestOverNearCorner =
-          std::min(run.closestOverNearCorner, (at.head<2>() - Eigen::Vector2d(-2, 8)).norm());
-      if ((at.head<2>() - Eigen::Vector2d(-2, 8)).norm() < 0.5 && command.setpoint)
+      const double fromNearCorner = (at.head<2>() - Eigen::Vector2d(-2, 8)).norm();
+      run.closestOverNearCorner = std::min(run.closestOverNearCorner, fromNearCorner);
+      if (fromNearCorner < 0.5 && command.setpoint)
         run.slowestOverNearCorner =
             std::min(run.slowestOverNearCorner, command.setpoint->velocity.norm());
       run.closestOverFarCorner =
