@@ -73,6 +73,19 @@ agent::AgentView startView() {
   return view;
 }
 
+// The station's first reply to e1: box 0 kept, `nextBox` reserved after it (-1: none), the next
+// meeting at box 0's corner at `meetingTime`, after the station's stops `before`.
+Reply keepBox0(int32_t nextBox, double meetingTime, std::vector<Meeting> before = {}) {
+  Reply reply;
+  reply.meetingNumber = 1;
+  reply.box = 0;
+  reply.next = {cornerOf(0), meetingTime};
+  reply.stops = std::move(before);
+  reply.stops.push_back(reply.next);
+  reply.nextBox = nextBox;
+  return reply;
+}
+
 // e1 explores box 0; its meeting with the station (never in range) is at `meetingTime` at box
 // 0's corner; a reply at 1 s (as if met on the way) optionally reserves box 1, and lists the
 // station's stops before that meeting (`before`).
@@ -84,13 +97,7 @@ Run fly(const Config& config, int32_t reserved, double until, std::vector<Meetin
   const Vec3 corner = cornerOf(0);
   FleetPlan plan;
   plan.subgroups.push_back({1, {}, 0, {corner, meetingTime}, 0});
-  Reply reply;
-  reply.meetingNumber = 1;
-  reply.box = 0;
-  reply.next = {corner, meetingTime};
-  reply.stops = before;
-  reply.stops.push_back(reply.next);
-  reply.nextBox = reserved;
+  const Reply reply = keepBox0(reserved, meetingTime, std::move(before));
   run.view = startView();
   auto& view = run.view;
   for (int step = 0; step * 0.1 <= until; ++step) {
@@ -414,15 +421,8 @@ HandoutTiming handoutWhileExploring(const Config& config, bool highPriority, dou
     view.time = step * 0.1;
     view.messages.clear();
     if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
-    if (step == 10 && reserveNext) {
-      Reply reply;
-      reply.meetingNumber = 1;
-      reply.box = 0;
-      reply.next = {cornerOf(0), 400.0};
-      reply.stops = {reply.next};
-      reply.nextBox = 1;
-      view.messages.push_back({"gcs", kReplyTopic, encode(reply)});
-    }
+    if (step == 10 && reserveNext)
+      view.messages.push_back({"gcs", kReplyTopic, encode(keepBox0(1, 400.0))});
     view.neighbours = {inspector};
     view.detectedFeatures.clear();
     view.receivedResults.clear();
