@@ -321,6 +321,25 @@ std::optional<agent::BoxView> Slei3dStrategy::partShape(int32_t box) const {
   return boxes_[static_cast<size_t>(box)];
 }
 
+namespace {
+
+// split_last_box's parts, about one per explorer that may share them: for two, halves across
+// the longer side of the footprint; for more, the footprint's quarters. None when no side to
+// halve is longer than leafEdge.
+std::vector<agent::BoxView> lastBoxParts(const agent::BoxView& box, size_t explorers,
+                                         double leafEdge) {
+  if (explorers > 2) return octreeChildren(box, leafEdge, false);
+  const auto bounds = runtime::boxBounds(box);
+  agent::BoxView aligned = box;
+  aligned.center = 0.5 * (bounds.min + bounds.max);
+  aligned.size = bounds.max - bounds.min;
+  aligned.rotation = Eigen::Matrix3d::Identity();
+  if (std::max(aligned.size.x(), aligned.size.y()) <= leafEdge) return {};
+  return splitWorkspace(aligned, 2);
+}
+
+}  // namespace
+
 int32_t Slei3dStrategy::takeNextBox(uint32_t explorer, int32_t after) {
   int32_t box = -1;
   if (fixedRegions()) {
@@ -331,10 +350,33 @@ int32_t Slei3dStrategy::takeNextBox(uint32_t explorer, int32_t after) {
       order->erase(order->begin());
     }
   } else {
-    box = nearestFreeBox(boxes_, boxTaken_, boxes_[static_cast<size_t>(after)].center);
+    const Vec3 from = boxes_[static_cast<size_t>(after)].center;
+    box = nearestFreeBox(boxes_, boxTaken_, from);
+    if (box >= 0 && options_.splitLastBox && !options_.unknownWorkspace && freeBoxCount() == 1 &&
+        explorerCount() > 1 && static_cast<size_t>(box) < sceneBoxes_) {
+      // split_last_box: its parts replace it (it stays taken), the nearest given out. A part is
+      // not split again.
+      const auto parts =
+          lastBoxParts(boxes_[static_cast<size_t>(box)], explorerCount(), options_.leafEdge);
+      if (!parts.empty()) {
+        boxTaken_[static_cast<size_t>(box)] = 1;
+        for (const auto& part : parts) {
+          boxes_.push_back(part);
+          boxTaken_.push_back(0);
+        }
+        box = nearestFreeBox(boxes_, boxTaken_, from);
+      }
+    }
   }
   if (box >= 0) boxTaken_[static_cast<size_t>(box)] = 1;
   return box;
+}
+
+// The station's explorers not presumed lost (at work, or waiting for work).
+size_t Slei3dStrategy::explorerCount() const {
+  return static_cast<size_t>(
+      std::count_if(plan_->subgroups.begin(), plan_->subgroups.end(),
+                    [&](const auto& s) { return !lost_.count(s.explorer); }));
 }
 
 size_t Slei3dStrategy::subgroupIndex(uint32_t explorer) const {

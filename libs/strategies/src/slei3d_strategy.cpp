@@ -278,6 +278,7 @@ SleiOptions readOptions(const Config& config, SleiVariant variant) {
   // explorers waited for shares from 752 and 787 s to the end, a third from 1798 s, while the
   // fourth still explored; nothing was handed out).
   o.shareWork = config.getBool("slei3d", "share_work", variant != SleiVariant::ExploreFirst);
+  o.splitLastBox = config.getBool("slei3d", "split_last_box", o.splitLastBox);
   o.frontierChunk = number("frontier_chunk", o.frontierChunk, 0.0, 100.0);
   if (o.frontierChunk > 0.0 && o.frontierChunk < 1.0)
     throw InputError(config.source(), "[slei3d] frontier_chunk",

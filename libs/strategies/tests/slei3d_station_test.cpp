@@ -1,6 +1,6 @@
 // The slei3d ground station driven by hand: the unknown workspace's slabs and octree parts, the
-// reserved next box (and the last free box kept for an explorer without one), work shared with
-// an explorer left without a box.
+// reserved next box (and the last free box kept for an explorer without one, or split while
+// others work), work shared with an explorer left without a box.
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -20,20 +20,14 @@ namespace {
 using agent::Role;
 using test::makeBox;
 
-agent::StrategyContext stationContext(const Config& config) {
-  return agent::StrategyContext{config,
-                                "slei3d",
-                                "gcs",
-                                Role::GroundStation,
-                                0,
-                                1,
-                                {{"gcs", Role::GroundStation},
-                                 {"e1", Role::Explorer},
-                                 {"e2", Role::Explorer},
-                                 {"p1", Role::Photographer},
-                                 {"p2", Role::Photographer}},
-                                {},
-                                0.0};
+agent::StrategyContext stationContext(const Config& config, bool thirdExplorer = false) {
+  std::vector<agent::FleetMember> fleet = {{"gcs", Role::GroundStation},
+                                           {"e1", Role::Explorer},
+                                           {"e2", Role::Explorer},
+                                           {"p1", Role::Photographer},
+                                           {"p2", Role::Photographer}};
+  if (thirdExplorer) fleet.push_back({"e3", Role::Explorer});
+  return agent::StrategyContext{config, "slei3d", "gcs", Role::GroundStation, 0, 1, fleet, {}, 0.0};
 }
 
 // Two 10 m cubes 30 m apart: the workspace is x in [-5, 35], y in [-5, 5], z in [0, 10].
@@ -222,10 +216,12 @@ Report boxlessReport(uint32_t meetingNumber) {
 // (nearest the station), e2 then B.
 std::unique_ptr<agent::Strategy> plannedStation(const std::string& configText,
                                                 const std::vector<agent::BoxView>* boxes = &kRow,
-                                                const std::string& method = "slei3d") {
+                                                const std::string& method = "slei3d",
+                                                bool thirdExplorer = false) {
   agent::StrategyRegistry registry;
   registerSlei3d(registry);
-  auto station = registry.create(method, stationContext(Config::fromText(configText, "run.ini")));
+  auto station = registry.create(
+      method, stationContext(Config::fromText(configText, "run.ini"), thirdExplorer));
   auto first = stationView(0.0, {}, boxes);
   first.odometry.position = Vec3(0, -15, 0.1);
   station->decide(first);
@@ -278,6 +274,43 @@ TEST(Slei3dStation, TheLastFreeBoxIsNotReservedWhileAnotherExplorerHasNone) {
   auto other = plannedStation("", &three);
   EXPECT_EQ(replyTo(*other, "e2", 50.0, reportOf(1, true, 1), &three)->box, 2);
   EXPECT_EQ(replyTo(*other, "e1", 60.0, reportOf(0, false, 1), &three)->nextBox, -1);
+}
+
+TEST(Slei3dStation, TheLastFreeBoxIsSplitAcrossItsFootprintWhileAnotherExplorerWorks) {
+  // A and B by the station, C a 20 x 20 m box far off: the last free one.
+  const std::vector<agent::BoxView> boxes = {kRow[0], kRow[1],
+                                             makeBox(Vec3(110, 0, 5), Vec3(20, 20, 10))};
+  auto station = plannedStation("[slei3d]\nsplit_last_box = true\n", &boxes);
+  // e2 done with B while e1 still works in A: C is split in two across x (one part per
+  // explorer), and e2 gets the half nearest B, a part whose shape it is sent (the full height).
+  const auto toE2 = replyTo(*station, "e2", 70.0, reportOf(1, true, 1), &boxes);
+  ASSERT_TRUE(toE2 && toE2->boxShape);
+  EXPECT_GE(toE2->box, 3);
+  EXPECT_TRUE(toE2->boxShape->size.isApprox(Vec3(10, 20, 10), 1e-9));
+  EXPECT_TRUE(toE2->boxShape->center.isApprox(Vec3(105, 0, 5), 1e-9));
+  // e1, done with A, gets the other half at once (no wait for a share of e2's).
+  const auto toE1 = replyTo(*station, "e1", 80.0, reportOf(0, true, 1), &boxes);
+  ASSERT_TRUE(toE1 && toE1->boxShape);
+  EXPECT_EQ(toE1->box, toE2->box == 3 ? 4 : 3);
+  EXPECT_TRUE(toE1->boxShape->center.isApprox(Vec3(115, 0, 5), 1e-9));
+
+  // Off (the default): e2 gets C whole, and e1 done with A has nothing left but to wait for a
+  // share of it.
+  auto whole = plannedStation("", &boxes);
+  const auto all = replyTo(*whole, "e2", 70.0, reportOf(1, true, 1), &boxes);
+  ASSERT_TRUE(all);
+  EXPECT_EQ(all->box, 2);
+  EXPECT_FALSE(all->boxShape);
+  EXPECT_EQ(replyTo(*whole, "e1", 80.0, reportOf(0, true, 1), &boxes)->box, -1);
+
+  // Three explorers (e3 in the 10 m box at x = 100): C's four 10 m columns.
+  const std::vector<agent::BoxView> four = {kRow[0], kRow[1], kRow[2],
+                                            makeBox(Vec3(130, 0, 5), Vec3(20, 20, 10))};
+  auto three = plannedStation("[slei3d]\nsplit_last_box = true\n", &four, "slei3d", true);
+  const auto column = replyTo(*three, "e2", 70.0, reportOf(1, true, 1), &four);
+  ASSERT_TRUE(column && column->boxShape);
+  EXPECT_GE(column->box, 4);
+  EXPECT_TRUE(column->boxShape->size.isApprox(Vec3(10, 10, 10), 1e-9));
 }
 
 TEST(Slei3dStation, AnExplorerWithoutABoxGetsTheReservedBoxOfOneAtWork) {

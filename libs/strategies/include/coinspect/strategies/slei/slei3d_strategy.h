@@ -125,6 +125,15 @@ struct SleiOptions {
   // edges above leafEdge), which join the free boxes. Off: an explorer with no free box left is
   // done (the paper's rolling assignment). Not for the fixed box orders (slei-pre, caric-team).
   bool shareWork = true;
+  // `[slei3d] split_last_box` (not the paper's): the rolling assignment, about to give out (or
+  // reserve) the last free box of the scene while the station has other explorers, splits it
+  // first (halves across its longer side for two explorers, footprint quarters for more; edges
+  // above leafEdge) and gives out the part nearest; the other parts stay free for whoever is
+  // done next. Whole, the last box goes to one explorer, often reserved long before it can start
+  // it, and the others, done, wait for a share of it (slei-c, scene seed 1: block 3, reserved at
+  // 566 s, started at 1086 s, split at 1121 s). Off by default: measured, it moved neither
+  // Table I ratio (doc/strategies.md, "Work sharing").
+  bool splitLastBox = false;
   // m: frontier clusters are cut into cubes of this edge, one viewpoint each (FUEL's split of
   // large frontiers; 0: whole clusters).
   double frontierChunk = 0.0;
@@ -193,6 +202,7 @@ class Slei3dStrategy : public agent::Strategy {
   bool sharingWork() const { return options_.shareWork && !fixedRegions(); }
   // Work sharing: explorers other than `explorer` waiting for a share of another's box.
   bool othersAwaitWork(uint32_t explorer) const;
+  size_t explorerCount() const;  // the station's explorers, not lost
   // The earliest scheduled meeting of an explorer, not `explorer`, still at work in a box.
   const StationMeeting* nextMeetingAtWork(uint32_t explorer) const;
   // The shape to send with `box` when it is a part the explorers do not know.
