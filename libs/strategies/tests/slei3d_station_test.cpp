@@ -288,7 +288,8 @@ TEST(Slei3dStation, TheLastFreeBoxIsSplitAcrossItsFootprintWhileAnotherExplorerW
   EXPECT_GE(toE2->box, 3);
   EXPECT_TRUE(toE2->boxShape->size.isApprox(Vec3(10, 20, 10), 1e-9));
   EXPECT_TRUE(toE2->boxShape->center.isApprox(Vec3(105, 0, 5), 1e-9));
-  // e1, done with A, gets the other half at once (no wait for a share of e2's).
+  // e1, done with A, gets the other half at once, whole (a part is not split again), without
+  // waiting for a share of e2's.
   const auto toE1 = replyTo(*station, "e1", 80.0, reportOf(0, true, 1), &boxes);
   ASSERT_TRUE(toE1 && toE1->boxShape);
   EXPECT_EQ(toE1->box, toE2->box == 3 ? 4 : 3);
