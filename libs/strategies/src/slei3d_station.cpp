@@ -329,11 +329,8 @@ namespace {
 std::vector<agent::BoxView> lastBoxParts(const agent::BoxView& box, size_t explorers,
                                          double leafEdge) {
   if (explorers > 2) return octreeChildren(box, leafEdge, false);
-  const auto bounds = runtime::boxBounds(box);
-  agent::BoxView aligned = box;
-  aligned.center = 0.5 * (bounds.min + bounds.max);
-  aligned.size = bounds.max - bounds.min;
-  aligned.rotation = Eigen::Matrix3d::Identity();
+  auto aligned = workspaceBox({box});  // world-aligned, as octreeChildren's parts
+  aligned.highPriority = box.highPriority;
   if (std::max(aligned.size.x(), aligned.size.y()) <= leafEdge) return {};
   return splitWorkspace(aligned, 2);
 }
@@ -352,12 +349,13 @@ int32_t Slei3dStrategy::takeNextBox(uint32_t explorer, int32_t after) {
   } else {
     const Vec3 from = boxes_[static_cast<size_t>(after)].center;
     box = nearestFreeBox(boxes_, boxTaken_, from);
+    const size_t explorers = explorerCount();
     if (box >= 0 && options_.splitLastBox && !options_.unknownWorkspace && freeBoxCount() == 1 &&
-        explorerCount() > 1 && static_cast<size_t>(box) < sceneBoxes_) {
+        explorers > 1 && static_cast<size_t>(box) < sceneBoxes_) {
       // split_last_box: its parts replace it (it stays taken), the nearest given out. A part is
       // not split again.
       const auto parts =
-          lastBoxParts(boxes_[static_cast<size_t>(box)], explorerCount(), options_.leafEdge);
+          lastBoxParts(boxes_[static_cast<size_t>(box)], explorers, options_.leafEdge);
       if (!parts.empty()) {
         boxTaken_[static_cast<size_t>(box)] = 1;
         for (const auto& part : parts) {
