@@ -640,12 +640,12 @@ std::vector<Slei3dStrategy::Handout> Slei3dStrategy::splitAtHub(const agent::Age
   return planned;
 }
 
-// A mandatory hand-out (the box explored, or a new box to announce): an inspector around which SOEI
-// sampled no point (the explorer's map paints an inspector waiting out of link, and its
-// neighbourhood with it) gets one candidate, the reachable point nearest where its plan ends.
-// Without it SOEI met only the inspectors it had points for and gave them the whole box: slei-a,
-// scene seed 2, with `handout_at_box_end`, 26 features to `inspector2` (inspected 688 to 800 s)
-// while `inspector1` waited from 433 to 758 s.
+// A mandatory hand-out (the box explored, or a new box to announce), or one the last box's hold
+// let out: an inspector around which SOEI sampled no point (the explorer's map paints an
+// inspector waiting out of link, and its neighbourhood with it) gets one candidate, the reachable
+// point nearest where its plan ends. Without it SOEI met only the inspectors it had points for
+// and gave them the whole box: slei-a, scene seed 2, with `handout_at_box_end`, 26 features to
+// `inspector2` (inspected 688 to 800 s) while `inspector1` waited from 433 to 758 s.
 void Slei3dStrategy::addPlanEndPoints(const agent::AgentView& view,
                                       const std::vector<planning::InspectorPlan>& plans,
                                       std::vector<planning::InspectorMeetingPoints>* points) const {
@@ -796,7 +796,11 @@ void Slei3dStrategy::planHandout(const agent::AgentView& view) {
         planning::voxelGridMeetingSpace(map_->grid(), flight_->requiredClearance(map_->grid()));
     auto points = planning::sampleInspectorMeetingPoints(problem.inspectors, view.time, box, space,
                                                          options.sampling);
-    if (problem.explorationFinished) addPlanEndPoints(view, problem.inspectors, &points);
+    // Held too long, the features go out even to inspectors SOEI sampled no point around (an
+    // inspector waiting out of link, painted on the map): else the hold ended only when the box
+    // did (slei-a, scene seed 3: 22 features held from 504 s to 735 s, both inspectors idle).
+    if (problem.explorationFinished || heldTooLong)
+      addPlanEndPoints(view, problem.inspectors, &points);
     const auto decision = planning::decideMeetings(problem, points, options);
     // No feasible candidate even so (no point near an inspector's plan end either, or every
     // route misses a window): each inspector met where its plan ends, the features split

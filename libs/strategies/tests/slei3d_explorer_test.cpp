@@ -405,9 +405,17 @@ struct HandoutTiming {
 
 // e1 detects feature 7 at 2 s with i1 in sight; at `resultAt` s (if >= 0) it receives 7's
 // inspection result (from another subgroup, through the station). With `reserveNext`, a reply at
-// 1 s (as if met on the way) keeps box 0 and reserves box 1 after it.
+// 1 s (as if met on the way) keeps box 0 and reserves box 1 after it. With `paintedWaitPoint`, a
+// LiDAR sweep at 0.5 s maps a body at i1's wait point, as the map paints an inspector seen there
+// out of link (SOEI samples no meeting point around it), and e1 finds features 8-10 with 7.
 HandoutTiming handoutWhileExploring(const Config& config, bool highPriority, double resultAt = -1.0,
-                                    bool reserveNext = false) {
+                                    bool reserveNext = false, bool paintedWaitPoint = false) {
+  auto body = std::make_shared<std::vector<Eigen::Vector3f>>();
+  const Eigen::Vector3f waitPoint(-7.9f, 5.6f, 6.0f);  // i1's first wait point
+  for (float x = -0.3f; x <= 0.31f; x += 0.1f)
+    for (float y = -0.3f; y <= 0.31f; y += 0.1f)
+      for (float z = -0.3f; z <= 0.31f; z += 0.1f)
+        body->push_back(waitPoint + Eigen::Vector3f(x, y, z));
   auto explorer = makeExplorer(
       config, "slei3d",
       {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}, {"i1", Role::Photographer}});
@@ -424,10 +432,14 @@ HandoutTiming handoutWhileExploring(const Config& config, bool highPriority, dou
     if (step == 10 && reserveNext)
       view.messages.push_back({"gcs", kReplyTopic, encode(keepBox0(1, 400.0))});
     view.neighbours = {inspector};
+    if (step == 5 && paintedWaitPoint) view.lidar = {0.5, view.odometry.position, body};
     view.detectedFeatures.clear();
     view.receivedResults.clear();
     if (step == 20)
       view.detectedFeatures.push_back({7, Vec3(0, 8, 2), -Vec3::UnitY(), 2.0, highPriority});
+    for (uint32_t f = 8; step == 20 && paintedWaitPoint && f < 11; ++f)
+      view.detectedFeatures.push_back(
+          {f, Vec3(-1.5 + 0.5 * (f - 8), 8, 1.0), -Vec3::UnitY(), 2.0, highPriority});
     if (resultAt >= 0.0 && step == static_cast<int>(std::lround(resultAt * 10.0)))
       view.receivedResults.push_back(7);
     const auto command = explorer->decide(view);
@@ -461,7 +473,8 @@ TEST(Slei3dExplorer, WithHandoutAtBoxEndItHandsOutOnlyOnceItsBoxIsExplored) {
 
 // In its last box (no next box reserved) it holds what it finds only `last_box_hold` s: the
 // feature found at 2 s goes out before the box is explored (where it goes out when held to the
-// box's end). With a next box reserved it is held to the box's end all the same.
+// box's end), also to an inspector around which SOEI sampled no meeting point. With a next box
+// reserved it is held to the box's end all the same.
 TEST(Slei3dExplorer, InItsLastBoxItHandsOutWhatItHeldTooLong) {
   const auto config = [](const char* hold) {
     return Config::fromText(
@@ -471,6 +484,8 @@ TEST(Slei3dExplorer, InItsLastBoxItHandsOutWhatItHeldTooLong) {
   const auto held = handoutWhileExploring(config("0"), false);
   const auto released = handoutWhileExploring(config("5"), false);
   const auto reserved = handoutWhileExploring(config("5"), false, -1.0, true);
+  const auto painted = handoutWhileExploring(config("5"), false, -1.0, false, true);
+  const auto paintedHeld = handoutWhileExploring(config("0"), false, -1.0, false, true);
   ASSERT_GT(held.roofPassEnd, 0.0);
   ASSERT_GT(held.firstOrders, 0.0);
   EXPECT_GE(held.firstOrders, held.roofPassEnd);
@@ -479,6 +494,12 @@ TEST(Slei3dExplorer, InItsLastBoxItHandsOutWhatItHeldTooLong) {
   EXPECT_LT(released.firstOrders, held.firstOrders);
   ASSERT_GT(reserved.roofPassEnd, 0.0);
   EXPECT_GE(reserved.firstOrders, reserved.roofPassEnd);
+  // No point sampled around the inspector: it is met where its plan ends, as at the box's end.
+  ASSERT_GT(paintedHeld.roofPassEnd, 0.0);
+  EXPECT_GE(paintedHeld.firstOrders, paintedHeld.roofPassEnd);
+  ASSERT_GT(painted.firstOrders, 0.0);
+  EXPECT_GE(painted.firstOrders, 7.0);
+  EXPECT_LT(painted.firstOrders, paintedHeld.roofPassEnd);
 }
 
 // A feature whose result it carries is not handed out: neither one detected after the result
