@@ -407,7 +407,8 @@ struct HandoutTiming {
 // inspection result (from another subgroup, through the station). With `reserveNext`, a reply at
 // 1 s (as if met on the way) keeps box 0 and reserves box 1 after it. With `paintedWaitPoint`, a
 // LiDAR sweep at 0.5 s maps a body at i1's wait point, as the map paints an inspector seen there
-// out of link (SOEI samples no meeting point around it), and e1 finds features 8-10 with 7.
+// out of link (SOEI samples no meeting point around it), and e1 finds features 8-10 with 7 (with
+// 7 alone, SOEI's costs chose not to meet at the one candidate left until the box's end).
 HandoutTiming handoutWhileExploring(const Config& config, bool highPriority, double resultAt = -1.0,
                                     bool reserveNext = false, bool paintedWaitPoint = false) {
   auto body = std::make_shared<std::vector<Eigen::Vector3f>>();
