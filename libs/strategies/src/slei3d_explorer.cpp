@@ -53,6 +53,7 @@ constexpr double kChargeHeight = 0.8;     // share of the charge range above the
 constexpr double kRoofPassRise = 0.5;     // m above the lowest flyable height over a box
 constexpr double kApproachAfter = 1.0;    // s past a hand-out's time before approaching
 constexpr double kApproachStop = 1.5;     // m short of the inspector's predicted place
+constexpr double kFetchStop = 2.0;        // s an exchange of results takes, with the approach
 
 // The roof pass over `box` at height `z`: the corner of its footprint nearest `from`, then the
 // opposite one (the flight between crosses the box; from the two corners the LiDAR looks down
@@ -724,6 +725,50 @@ std::vector<Slei3dStrategy::Handout> Slei3dStrategy::planCollection(
   return planned;
 }
 
+// Its list presumed worked since its last status (presumeDone): the inspector is where the
+// list ends once the time of its features is past. Nearest first, each one kept if the detour
+// so far stays within the bound (waiting for a list to end counts).
+std::vector<Slei3dStrategy::Handout> Slei3dStrategy::fetchOnTheWay(const agent::AgentView& view,
+                                                                   const Vec3& to,
+                                                                   double* arrival) const {
+  struct Candidate {
+    size_t inspector;
+    Vec3 end;     // where its list ends
+    double done;  // when
+  };
+  std::vector<Candidate> left;
+  for (size_t k = 0; k < inspectors_.size(); ++k)
+    if (inspectors_[k].toCollect(view.time)) {
+      const auto plan = predictedPlan(inspectors_[k], view.time, true);
+      left.push_back({k, plan.poses.back().position, plan.poses.back().start});
+    }
+  std::vector<Handout> planned;
+  Vec3 at = view.odometry.position;
+  double t = view.time;
+  const double direct = t + straightTime(at, to, options_.speed);
+  while (!left.empty()) {
+    const auto next =
+        std::min_element(left.begin(), left.end(), [&](const Candidate& a, const Candidate& b) {
+          return (a.end - at).squaredNorm() < (b.end - at).squaredNorm();
+        });
+    const double reach = t + straightTime(at, next->end, options_.speed);
+    const double met = std::max(reach, next->done) + kFetchStop;
+    if (met + straightTime(next->end, to, options_.speed) - direct <= options_.fetchDetour) {
+      Handout handout;
+      handout.inspector = next->inspector;
+      handout.place = next->end;  // the meeting point near it: only for the fetch flown
+      handout.time = next->done;  // and from here to that point, if later
+      handout.collect = true;
+      planned.push_back(std::move(handout));
+      at = next->end;
+      t = met;
+    }
+    left.erase(next);
+  }
+  *arrival = t + straightTime(at, to, options_.speed);
+  return planned;
+}
+
 // SOEI (planning/meeting_decision.h): which inspectors to meet with the pending features, in
 // which order, where; or not to meet yet.
 void Slei3dStrategy::planHandout(const agent::AgentView& view) {
@@ -1019,11 +1064,46 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
       atMeeting < stationMeeting_.time + kCollectOverrun;
   const bool busyAway = phase_ == ExplorerPhase::ToBox || phase_ == ExplorerPhase::Exploring ||
                         phase_ == ExplorerPhase::ToInspector || phase_ == ExplorerPhase::Done;
-  if (busyAway && !collecting && stationMeeting_.time < kNoMeeting &&
-      atMeeting + kLeaveMargin >= stationMeeting_.time) {
+  // `fetch_detour`: results done at its inspectors go with it to this meeting, not the next
+  // one. Only with no next box reserved (near the run's end, where the last results set the
+  // finish time): at every meeting, the detours took exploring time (slei-c scene seed 2: 94 %
+  // at 1627 s against 1447 s without the fetch).
+  if (options_.fetchDetour > 0.0 && options_.variant != SleiVariant::Team && nextBox_ < 0 &&
+      busyAway && phase_ != ExplorerPhase::ToInspector && !collecting &&
+      fetchedFor_ != meetingNumber_ && stationMeeting_.time < kNoMeeting &&
+      atMeeting + kLeaveMargin + options_.fetchDetour >= stationMeeting_.time) {
+    double via = 0.0;
+    auto fetch = fetchOnTheWay(view, meetingPlace, &via);
+    // Time to go that way, and still on time for the meeting.
+    if (!fetch.empty() && via + kLeaveMargin >= stationMeeting_.time &&
+        via <= stationMeeting_.time) {
+      fetchedFor_ = meetingNumber_;
+      for (auto& handout : fetch) {
+        handout.place = meetingPointNear(view, handout.place, handout.place, false);
+        handout.time =
+            std::max(handout.time, view.time + straightTime(here, handout.place, options_.speed));
+      }
+      startHandouts(std::move(fetch));
+      fetching_ = true;
+    }
+  }
+  // When it leaves for the station: kLeaveMargin early, flying straight; fetching, once the way
+  // via the inspectors left would get it there late.
+  double due = atMeeting + kLeaveMargin;
+  if (fetching_ && phase_ == ExplorerPhase::ToInspector) {
+    Vec3 at = here;
+    double t = view.time;
+    for (const auto& handout : handouts_) {
+      t = std::max(t + straightTime(at, handout.place, options_.speed), handout.time) + kFetchStop;
+      at = handout.place;
+    }
+    due = t + straightTime(at, meetingPlace, options_.speed);
+  }
+  if (busyAway && !collecting && stationMeeting_.time < kNoMeeting && due >= stationMeeting_.time) {
     for (const auto& handout : handouts_)
       pending_.insert(pending_.begin(), handout.orders.tasks.begin(), handout.orders.tasks.end());
     handouts_.clear();
+    fetching_ = false;
     phase_ = ExplorerPhase::ToStation;
     goToStation(view, stationPlace);
   }
@@ -1169,6 +1249,7 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
         if (!handouts_.empty()) {
           flight_->goTo(handouts_.front().place, options_.speed);
         } else {
+          fetching_ = false;
           phase_ = box_ >= 0 ? ExplorerPhase::Exploring : ExplorerPhase::Done;
           lastPlan_ = -1e300;
         }

@@ -290,6 +290,7 @@ SleiOptions readOptions(const Config& config, SleiVariant variant) {
   o.handoutAtBoxEnd = config.getBool("slei3d", "handout_at_box_end", o.handoutAtBoxEnd);
   o.sweepThrough = config.getBool("slei3d", "sweep_through", o.sweepThrough);
   o.lastBoxHold = number("last_box_hold", o.lastBoxHold, 0.0, 3600.0);
+  o.fetchDetour = number("fetch_detour", o.fetchDetour, 0.0, 600.0);
   o.priorityFirst = config.getBool("slei3d", "priority_first", o.priorityFirst);
   o.deadlineBound = config.getBool("slei3d", "deadline_bound", o.deadlineBound);
   o.searchDepth =

@@ -3,11 +3,12 @@
 // looks for a late station along the station's route, never past the time to leave for its own
 // meeting; before it is done with a box, it flies over it (the roof pass); it comes back for an
 // inspector's results until its list is done, and not once it is done, inspected or skipped, and
-// with no box left not even for its station meeting; pushed off its station meeting point, it
-// goes back; with `handout_at_box_end` it hands out nothing before its box is explored, and
-// never a feature whose result it carries; caric-team's explorer splits its features among its
-// free inspectors at the hub, comes back there once its last box is explored, and waits on its
-// own side of the station.
+// with no box left not even for its station meeting; with `fetch_detour` and no next box
+// reserved, it fetches done results on its way to the station; pushed off its station meeting
+// point, it goes back; with `handout_at_box_end` it hands out nothing before its box is
+// explored, and never a feature whose result it carries; caric-team's explorer splits its
+// features among its free inspectors at the hub, comes back there once its last box is
+// explored, and waits on its own side of the station.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -284,6 +285,72 @@ TEST(Slei3dExplorer, WithNoBoxLeftItCollectsPastTheTimeToLeaveForItsMeeting) {
   EXPECT_GT(run.lastOrdersAt, 50.0);
   EXPECT_LT(run.lastOrdersAt, 60.0);
   EXPECT_LT((run.at - cornerOf(1)).head<2>().norm(), 5.0);
+}
+
+// e1 explores box 0 (meeting at 400 s by the box, no next box reserved) and hands the feature
+// found at 2 s to i1 (always in link), which acknowledges it and inspects it on its own time
+// (it never says it is done). At 50 s a second reply (as if the station passed by) sets the
+// next meeting 40 m away at box 1's corner at 95 s. When e1 sent i1 orders again (sequence 2:
+// a collection) and when it got to the meeting point.
+struct Fetch {
+  double collectedAt = -1.0;
+  double arrivedAt = -1.0;
+};
+
+Fetch fetchBeforeMeeting(const Config& config) {
+  auto explorer = makeExplorer(
+      config, "slei3d",
+      {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}, {"i1", Role::Photographer}});
+  FleetPlan plan;
+  plan.subgroups.push_back({1, {2}, 0, {cornerOf(0), 400.0}, 0});
+  Reply moved = keepBox0(-1, 95.0);
+  moved.meetingNumber = 2;
+  moved.next.place = cornerOf(1);
+  moved.stops = {moved.next};
+  agent::AgentView view = startView();
+  agent::NeighbourInfo inspector{"i1", Role::Photographer, {}};
+  inspector.odometry.position = Vec3(-6, 4, 3);
+  Fetch run;
+  std::vector<agent::ReceivedMessage> answers;
+  for (int step = 0; step * 0.1 <= 110.0; ++step) {
+    view.time = step * 0.1;
+    view.messages = std::move(answers);
+    answers.clear();
+    view.neighbours = {inspector};
+    view.detectedFeatures.clear();
+    if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
+    if (step == 10) view.messages.push_back({"gcs", kReplyTopic, encode(keepBox0(-1, 400.0))});
+    if (step == 500) view.messages.push_back({"gcs", kReplyTopic, encode(moved)});
+    if (step == 20) view.detectedFeatures.push_back({7, Vec3(0, 8, 2), -Vec3::UnitY(), 2.0});
+    const auto command = explorer->decide(view);
+    if (command.setpoint) view.odometry.position = command.setpoint->position;
+    if (run.arrivedAt < 0.0 && (view.odometry.position - cornerOf(1)).head<2>().norm() < 5.0)
+      run.arrivedAt = view.time;
+    for (const auto& message : command.messages) {
+      if (message.to != "i1" || message.topic != kOrdersTopic) continue;
+      const auto orders = decodeOrders(message.bytes);
+      if (!orders) continue;
+      if (orders->sequence == 2 && run.collectedAt < 0.0) run.collectedAt = view.time;
+      Status status;
+      status.lastOrders = orders->sequence;
+      status.listLeft = 1;
+      answers.push_back({"i1", kStatusTopic, encode(status), view.time});
+    }
+  }
+  return run;
+}
+
+// With `fetch_detour`, e1 meets i1 for its results on the way to its station meeting (i1's list
+// of one feature should be done by then) and is at the meeting in time; without, it flies
+// straight there.
+TEST(Slei3dExplorer, WithNoNextBoxItFetchesDoneResultsOnItsWayToTheStation) {
+  const auto off = fetchBeforeMeeting(Config::fromText("", "run.ini"));
+  const auto on = fetchBeforeMeeting(Config::fromText("[slei3d]\nfetch_detour = 30\n", "run.ini"));
+  EXPECT_LT(off.collectedAt, 0.0);
+  ASSERT_GT(on.collectedAt, 50.0);  // after the reply that set the meeting
+  ASSERT_GT(on.arrivedAt, 0.0);
+  EXPECT_LT(on.collectedAt, on.arrivedAt);
+  EXPECT_LE(on.arrivedAt, 95.0);
 }
 
 // e1 (its box explored at once: nothing is scanned) waits at its point for the station's meeting

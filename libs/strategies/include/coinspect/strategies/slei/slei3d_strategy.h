@@ -104,6 +104,11 @@ struct SleiOptions {
   // explorer hands out the features it has held this long (`[slei3d] last_box_hold`; 0: held to
   // the box's end there too). No next box waits for it, and the inspectors are idle.
   double lastBoxHold = 100.0;
+  // s, `[slei3d] fetch_detour` (not the paper's; 0: off): with no next box reserved, an explorer
+  // on its way to the station first meets those of its inspectors whose lists should be done,
+  // when that costs it at most this much more than flying straight there, so that their results
+  // go with it to this meeting rather than the next one.
+  double fetchDetour = 0.0;
   // `[slei3d] sweep_through`: the flight is given the sweep's next two stops, so that it passes
   // a stop at its turn's speed instead of braking to a halt there (off: one stop at a time).
   bool sweepThrough = true;
@@ -395,6 +400,10 @@ class Slei3dStrategy : public agent::Strategy {
     bool approached = false;
   };
   std::vector<Handout> handouts_;  // in the order they are flown
+  // The hand-outs under way collect results on the way to the station (fetchOnTheWay), once per
+  // station meeting (fetchedFor_, the meeting's number).
+  bool fetching_ = false;
+  uint32_t fetchedFor_ = 0;
   // caric-team's rule at its hub: the pending features split in equal runs of a nearest-neighbour
   // tour among the inspectors free within kMaxHandoutWait of the first one free, each met where
   // its plan ends; none when the explorer would wait long for the first while exploring remains.
@@ -414,6 +423,11 @@ class Slei3dStrategy : public agent::Strategy {
   // No box left and nothing pending: meet each inspector that still has features where its
   // list ends, to carry its results to the station.
   std::vector<Handout> planCollection(const agent::AgentView& view) const;
+  // Those of its inspectors whose lists should be done by the time it gets to them, met on the
+  // way to `to` (nearest first) while the detour stays within fetchDetour: their collections,
+  // and via them the arrival at `to` (`arrival`).
+  std::vector<Handout> fetchOnTheWay(const agent::AgentView& view, const Vec3& to,
+                                     double* arrival) const;
   void startHandouts(std::vector<Handout> planned);
   // The inspector's hover windows as the explorer predicts them (SOEI's input).
   planning::InspectorPlan predictedPlan(const InspectorModel& model, double now,
