@@ -703,23 +703,25 @@ std::vector<Slei3dStrategy::Handout> Slei3dStrategy::handToEach(
   return planned;
 }
 
+Slei3dStrategy::Handout Slei3dStrategy::collectionAt(const agent::AgentView& view, size_t k,
+                                                     const planning::InspectorPlan& plan) const {
+  Handout handout;
+  handout.inspector = k;
+  const Vec3 end = plan.poses.back().position;
+  handout.place = meetingPointNear(view, end, end, false);
+  handout.time =
+      std::max(plan.poses.back().start,
+               view.time + straightTime(view.odometry.position, handout.place, options_.speed));
+  handout.collect = true;
+  return handout;
+}
+
 std::vector<Slei3dStrategy::Handout> Slei3dStrategy::planCollection(
     const agent::AgentView& view) const {
   std::vector<Handout> planned;
-  for (size_t k = 0; k < inspectors_.size(); ++k) {
-    const auto& model = inspectors_[k];
-    if (!model.toCollect(view.time)) continue;
-    const auto plan = predictedPlan(model, view.time);
-    Handout handout;
-    handout.inspector = k;
-    const Vec3 end = plan.poses.back().position;
-    handout.place = meetingPointNear(view, end, end, false);
-    handout.time =
-        std::max(plan.poses.back().start,
-                 view.time + straightTime(view.odometry.position, handout.place, options_.speed));
-    handout.collect = true;
-    planned.push_back(std::move(handout));
-  }
+  for (size_t k = 0; k < inspectors_.size(); ++k)
+    if (inspectors_[k].toCollect(view.time))
+      planned.push_back(collectionAt(view, k, predictedPlan(inspectors_[k], view.time)));
   std::stable_sort(planned.begin(), planned.end(),
                    [](const Handout& a, const Handout& b) { return a.time < b.time; });
   return planned;
@@ -728,39 +730,28 @@ std::vector<Slei3dStrategy::Handout> Slei3dStrategy::planCollection(
 // Its list presumed worked since its last status (presumeDone): the inspector is where the
 // list ends once the time of its features is past. Nearest first, each one kept if the detour
 // so far stays within the bound (waiting for a list to end counts).
-std::vector<Slei3dStrategy::Handout> Slei3dStrategy::fetchOnTheWay(const agent::AgentView& view,
-                                                                   const Vec3& to,
-                                                                   double* arrival) const {
-  struct Candidate {
-    size_t inspector;
-    Vec3 end;     // where its list ends
-    double done;  // when
-  };
-  std::vector<Candidate> left;
+std::vector<Slei3dStrategy::FetchStop> Slei3dStrategy::fetchOnTheWay(const agent::AgentView& view,
+                                                                     const Vec3& to,
+                                                                     double* arrival) const {
+  std::vector<FetchStop> left;
   for (size_t k = 0; k < inspectors_.size(); ++k)
-    if (inspectors_[k].toCollect(view.time)) {
-      const auto plan = predictedPlan(inspectors_[k], view.time, true);
-      left.push_back({k, plan.poses.back().position, plan.poses.back().start});
-    }
-  std::vector<Handout> planned;
+    if (inspectors_[k].toCollect(view.time))
+      left.emplace_back(k, predictedPlan(inspectors_[k], view.time, true));
+  std::vector<FetchStop> planned;
   Vec3 at = view.odometry.position;
   double t = view.time;
   const double direct = t + straightTime(at, to, options_.speed);
+  const auto endOf = [](const auto& candidate) { return candidate.second.poses.back(); };
   while (!left.empty()) {
-    const auto next =
-        std::min_element(left.begin(), left.end(), [&](const Candidate& a, const Candidate& b) {
-          return (a.end - at).squaredNorm() < (b.end - at).squaredNorm();
-        });
-    const double reach = t + straightTime(at, next->end, options_.speed);
-    const double met = std::max(reach, next->done) + kFetchStop;
-    if (met + straightTime(next->end, to, options_.speed) - direct <= options_.fetchDetour) {
-      Handout handout;
-      handout.inspector = next->inspector;
-      handout.place = next->end;  // the meeting point near it: only for the fetch flown
-      handout.time = next->done;  // and from here to that point, if later
-      handout.collect = true;
-      planned.push_back(std::move(handout));
-      at = next->end;
+    const auto next = std::min_element(left.begin(), left.end(), [&](const auto& a, const auto& b) {
+      return (endOf(a).position - at).squaredNorm() < (endOf(b).position - at).squaredNorm();
+    });
+    const auto end = endOf(*next);
+    const double met =
+        std::max(t + straightTime(at, end.position, options_.speed), end.start) + kFetchStop;
+    if (met + straightTime(end.position, to, options_.speed) - direct <= options_.fetchDetour) {
+      planned.push_back(std::move(*next));
+      at = end.position;
       t = met;
     }
     left.erase(next);
@@ -1078,12 +1069,10 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
     if (!fetch.empty() && via + kLeaveMargin >= stationMeeting_.time &&
         via <= stationMeeting_.time) {
       fetchedFor_ = meetingNumber_;
-      for (auto& handout : fetch) {
-        handout.place = meetingPointNear(view, handout.place, handout.place, false);
-        handout.time =
-            std::max(handout.time, view.time + straightTime(here, handout.place, options_.speed));
-      }
-      startHandouts(std::move(fetch));
+      std::vector<Handout> planned;
+      for (const auto& [inspector, plan] : fetch)
+        planned.push_back(collectionAt(view, inspector, plan));
+      startHandouts(std::move(planned));
       fetching_ = true;
     }
   }

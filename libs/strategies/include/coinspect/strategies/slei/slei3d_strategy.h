@@ -420,14 +420,19 @@ class Slei3dStrategy : public agent::Strategy {
                                   const std::vector<planning::InspectorPlan>& plans,
                                   const std::vector<planning::PendingFeature>& features,
                                   const std::vector<size_t>& modelOf) const;
+  // A meeting with inspector k for its results where its list ends (`plan`'s last pose).
+  Handout collectionAt(const agent::AgentView& view, size_t k,
+                       const planning::InspectorPlan& plan) const;
   // No box left and nothing pending: meet each inspector that still has features where its
   // list ends, to carry its results to the station.
   std::vector<Handout> planCollection(const agent::AgentView& view) const;
   // Those of its inspectors whose lists should be done by the time it gets to them, met on the
-  // way to `to` (nearest first) while the detour stays within fetchDetour: their collections,
-  // and via them the arrival at `to` (`arrival`).
-  std::vector<Handout> fetchOnTheWay(const agent::AgentView& view, const Vec3& to,
-                                     double* arrival) const;
+  // way to `to` (nearest first) while the detour stays within fetchDetour: each with its
+  // predicted plan, and via them the arrival at `to` (`arrival`). Checked every step near the
+  // time to leave: no map search here (collectionAt's, once the fetch is decided).
+  using FetchStop = std::pair<size_t, planning::InspectorPlan>;
+  std::vector<FetchStop> fetchOnTheWay(const agent::AgentView& view, const Vec3& to,
+                                       double* arrival) const;
   void startHandouts(std::vector<Handout> planned);
   // The inspector's hover windows as the explorer predicts them (SOEI's input).
   planning::InspectorPlan predictedPlan(const InspectorModel& model, double now,
