@@ -727,6 +727,12 @@ std::vector<Slei3dStrategy::Handout> Slei3dStrategy::planCollection(
   return planned;
 }
 
+// When a fetch from `at` (at `t`) is over at `place`: flown straight, waiting for the inspector
+// there until `ready`, and the exchange.
+double Slei3dStrategy::fetchedAt(const Vec3& at, double t, const Vec3& place, double ready) const {
+  return std::max(t + straightTime(at, place, options_.speed), ready) + kFetchStop;
+}
+
 // Its list presumed worked since its last status (presumeDone): the inspector is where the
 // list ends once the time of its features is past. Nearest first, each one kept if the detour
 // so far stays within the bound (waiting for a list to end counts).
@@ -747,8 +753,7 @@ std::vector<Slei3dStrategy::FetchStop> Slei3dStrategy::fetchOnTheWay(const agent
       return (endOf(a).position - at).squaredNorm() < (endOf(b).position - at).squaredNorm();
     });
     const auto end = endOf(*next);
-    const double met =
-        std::max(t + straightTime(at, end.position, options_.speed), end.start) + kFetchStop;
+    const double met = fetchedAt(at, t, end.position, end.start);
     if (met + straightTime(end.position, to, options_.speed) - direct <= options_.fetchDetour) {
       planned.push_back(std::move(*next));
       at = end.position;
@@ -1083,7 +1088,7 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
     Vec3 at = here;
     double t = view.time;
     for (const auto& handout : handouts_) {
-      t = std::max(t + straightTime(at, handout.place, options_.speed), handout.time) + kFetchStop;
+      t = fetchedAt(at, t, handout.place, handout.time);
       at = handout.place;
     }
     due = t + straightTime(at, meetingPlace, options_.speed);

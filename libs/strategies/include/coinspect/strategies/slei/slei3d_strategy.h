@@ -431,6 +431,7 @@ class Slei3dStrategy : public agent::Strategy {
   // predicted plan, and via them the arrival at `to` (`arrival`). Checked every step near the
   // time to leave: no map search here (collectionAt's, once the fetch is decided).
   using FetchStop = std::pair<size_t, planning::InspectorPlan>;
+  double fetchedAt(const Vec3& at, double t, const Vec3& place, double ready) const;
   std::vector<FetchStop> fetchOnTheWay(const agent::AgentView& view, const Vec3& to,
                                        double* arrival) const;
   void startHandouts(std::vector<Handout> planned);
