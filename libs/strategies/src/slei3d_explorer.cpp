@@ -395,6 +395,15 @@ std::optional<Vec3> Slei3dStrategy::earlyStop(const agent::AgentView& view, doub
   };
   std::optional<Vec3> best;
   double soonest = stationMeeting_.time - kWorthIt;
+  // A static station stands at its meeting place from the start: before its first reply, when
+  // the explorer knows none of its stops, it is met there. (Else a first box explored before
+  // the first meeting left its explorer hovering: caric-team on slei-a, scene seed 1, both
+  // explorers from about 115 s to 265 s, their meetings due at 300 s.)
+  if (staticStation() && stationStops_.empty()) {
+    const double at = view.time + straightTime(here, stationMeeting_.place, options_.speed);
+    if (at < soonest) *by = at, best = stationMeeting_.place, *index = 0;
+    return best;
+  }
   double free = lastReply_.time;  // when the station can leave for the next stop
   Vec3 from = lastReply_.place;
   for (size_t k = 0; k < stationStops_.size(); ++k) {

@@ -8,7 +8,7 @@
 // point, it goes back; with `handout_at_box_end` it hands out nothing before its box is
 // explored, and never a feature whose result it carries; caric-team's explorer splits its
 // features among its free inspectors at the hub, comes back there once its last box is
-// explored, and waits on its own side of the station.
+// explored (its first one too, before any reply), and waits on its own side of the station.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -425,6 +425,32 @@ TEST(Slei3dExplorer, CaricTeamDoneWithItsLastBoxGoesToItsHubWithWhatItFound) {
     if (nearestBox1 < 8.0 && (at - cornerOf(0)).head<2>().norm() < 5.0) backAt = view.time;
   }
   EXPECT_LT(nearestBox1, 8.0);  // it went to box 1
+  EXPECT_GT(backAt, 0.0);       // and came back to the hub
+  EXPECT_LT(backAt, 250.0);
+}
+
+// Before any reply (its first meeting at the hub at 400 s), e1 explores its first box, 40 m
+// away, and then comes back to the static station at once, not at its meeting's time. (It
+// hovered by its explored box until then: caric-team on slei-a, scene seed 1, both explorers
+// from about 115 s to 265 s.)
+TEST(Slei3dExplorer, CaricTeamDoneWithItsFirstBoxBeforeAnyReplyGoesToTheHub) {
+  auto explorer = makeExplorer(Config::fromText("", "run.ini"), "caric-team",
+                               {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}});
+  FleetPlan plan;
+  plan.subgroups.push_back({1, {}, 1, {cornerOf(0), 400.0}, 0});
+  agent::AgentView view = startView();
+  double nearestBox1 = 1e300, backAt = -1.0;
+  for (int step = 0; step * 0.1 <= 250.0 && backAt < 0.0; ++step) {
+    view.time = step * 0.1;
+    view.messages.clear();
+    if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
+    const auto command = explorer->decide(view);
+    if (command.setpoint) view.odometry.position = command.setpoint->position;
+    const Vec3& at = view.odometry.position;
+    nearestBox1 = std::min(nearestBox1, (at - kBoxes[1].center).head<2>().norm());
+    if (nearestBox1 < 8.0 && (at - cornerOf(0)).head<2>().norm() < 5.0) backAt = view.time;
+  }
+  EXPECT_LT(nearestBox1, 8.0);  // it explored box 1
   EXPECT_GT(backAt, 0.0);       // and came back to the hub
   EXPECT_LT(backAt, 250.0);
 }
