@@ -395,64 +395,62 @@ TEST(Slei3dExplorer, AnInspectorDoneWithItsListIsFreeEvenWithAFeatureSkipped) {
   EXPECT_EQ(ordersToInspector(1, 120.0, true), (std::vector<uint32_t>{1}));
 }
 
-// caric-team hands out only at its hub (its first meeting place, box 0's corner): with box 1
-// explored (at once: nothing is scanned) and a feature found on the way, it flies back there
-// long before its meeting at 400 s. (It waited at the box for the meeting before.)
-TEST(Slei3dExplorer, CaricTeamDoneWithItsLastBoxGoesToItsHubWithWhatItFound) {
+// A caric-team e1 (with inspector i1) whose first box is box 1, its first meeting at the hub
+// (box 0's corner) at 400 s, flown up to 250 s or until it is back at the hub having been at
+// box 1 (explored at once: nothing is scanned); `reply` arrives at 1 s, and with `found` a
+// feature is found at 2 s.
+struct HubReturn {
+  double nearestBox1 = 1e300;  // m, horizontal
+  double backAt = -1.0;        // s, -1: not back by 250 s
+};
+HubReturn flyCaricTeamBox1(const std::optional<Reply>& reply, bool found) {
   auto explorer = makeExplorer(
       Config::fromText("", "run.ini"), "caric-team",
       {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}, {"i1", Role::Photographer}});
   FleetPlan plan;
   plan.subgroups.push_back({1, {2}, 1, {cornerOf(0), 400.0}, 0});
-  Reply reply;  // at 1 s, as if met on the way: box 1 still, the station's one stop the hub
-  reply.meetingNumber = 1;
-  reply.box = 1;
-  reply.next = {cornerOf(0), 400.0};
-  reply.stops = {reply.next};
   agent::AgentView view = startView();
-  double nearestBox1 = 1e300, backAt = -1.0;
-  for (int step = 0; step * 0.1 <= 250.0 && backAt < 0.0; ++step) {
+  HubReturn run;
+  for (int step = 0; step * 0.1 <= 250.0 && run.backAt < 0.0; ++step) {
     view.time = step * 0.1;
     view.messages.clear();
     view.detectedFeatures.clear();
     if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
-    if (step == 10) view.messages.push_back({"gcs", kReplyTopic, encode(reply)});
-    if (step == 20) view.detectedFeatures.push_back({7, Vec3(20, 4, 2), -Vec3::UnitY(), 2.0});
+    if (step == 10 && reply) view.messages.push_back({"gcs", kReplyTopic, encode(*reply)});
+    if (step == 20 && found)
+      view.detectedFeatures.push_back({7, Vec3(20, 4, 2), -Vec3::UnitY(), 2.0});
     const auto command = explorer->decide(view);
     if (command.setpoint) view.odometry.position = command.setpoint->position;
     const Vec3& at = view.odometry.position;
-    nearestBox1 = std::min(nearestBox1, (at - kBoxes[1].center).head<2>().norm());
-    if (nearestBox1 < 8.0 && (at - cornerOf(0)).head<2>().norm() < 5.0) backAt = view.time;
+    run.nearestBox1 = std::min(run.nearestBox1, (at - kBoxes[1].center).head<2>().norm());
+    if (run.nearestBox1 < 8.0 && (at - cornerOf(0)).head<2>().norm() < 5.0) run.backAt = view.time;
   }
-  EXPECT_LT(nearestBox1, 8.0);  // it went to box 1
-  EXPECT_GT(backAt, 0.0);       // and came back to the hub
-  EXPECT_LT(backAt, 250.0);
+  return run;
 }
 
-// Before any reply (its first meeting at the hub at 400 s), e1 explores its first box, 40 m
-// away, and then comes back to the static station at once, not at its meeting's time. (It
-// hovered by its explored box until then: caric-team on slei-a, scene seed 1, both explorers
-// from about 115 s to 265 s.)
+// caric-team hands out only at its hub: with box 1 explored and a feature found on the way, it
+// flies back there long before its meeting at 400 s. (It waited at the box for the meeting
+// before.)
+TEST(Slei3dExplorer, CaricTeamDoneWithItsLastBoxGoesToItsHubWithWhatItFound) {
+  Reply reply;  // as if met on the way: box 1 still, the station's one stop the hub
+  reply.meetingNumber = 1;
+  reply.box = 1;
+  reply.next = {cornerOf(0), 400.0};
+  reply.stops = {reply.next};
+  const HubReturn run = flyCaricTeamBox1(reply, true);
+  EXPECT_LT(run.nearestBox1, 8.0);  // it went to box 1
+  EXPECT_GT(run.backAt, 0.0);       // and came back to the hub
+  EXPECT_LT(run.backAt, 250.0);
+}
+
+// Before any reply it knows none of the station's stops: done with its first box, it still
+// comes back to the static station at once, not at its meeting's time (it hovered by the box
+// until then: earlyStop).
 TEST(Slei3dExplorer, CaricTeamDoneWithItsFirstBoxBeforeAnyReplyGoesToTheHub) {
-  auto explorer = makeExplorer(Config::fromText("", "run.ini"), "caric-team",
-                               {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}});
-  FleetPlan plan;
-  plan.subgroups.push_back({1, {}, 1, {cornerOf(0), 400.0}, 0});
-  agent::AgentView view = startView();
-  double nearestBox1 = 1e300, backAt = -1.0;
-  for (int step = 0; step * 0.1 <= 250.0 && backAt < 0.0; ++step) {
-    view.time = step * 0.1;
-    view.messages.clear();
-    if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
-    const auto command = explorer->decide(view);
-    if (command.setpoint) view.odometry.position = command.setpoint->position;
-    const Vec3& at = view.odometry.position;
-    nearestBox1 = std::min(nearestBox1, (at - kBoxes[1].center).head<2>().norm());
-    if (nearestBox1 < 8.0 && (at - cornerOf(0)).head<2>().norm() < 5.0) backAt = view.time;
-  }
-  EXPECT_LT(nearestBox1, 8.0);  // it explored box 1
-  EXPECT_GT(backAt, 0.0);       // and came back to the hub
-  EXPECT_LT(backAt, 250.0);
+  const HubReturn run = flyCaricTeamBox1(std::nullopt, false);
+  EXPECT_LT(run.nearestBox1, 8.0);  // it explored box 1
+  EXPECT_GT(run.backAt, 0.0);       // and came back to the hub
+  EXPECT_LT(run.backAt, 250.0);
 }
 
 // Where e1, a caric-team explorer with nothing left, waits at its static station's hub (6, 0)
