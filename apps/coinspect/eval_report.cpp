@@ -148,7 +148,9 @@ void writeEvaluationFiles(const std::filesystem::path& folder, const RecordedRun
       {"timing", {{"wall_time", timing.wallTime}, {"real_time_factor", timing.simPerWall()}}}};
   const auto jsonPath = folder / "eval.json";
   auto json = openOutput(jsonPath);
-  json << report.dump(2) << '\n';
+  // The rawlog's path is the user's: a byte that is not UTF-8 is written as U+FFFD (dump would
+  // throw and leave eval.json empty).
+  json << report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
   closeOutput(json, jsonPath);
 
   const auto csvPath = folder / "coverage.csv";

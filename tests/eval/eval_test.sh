@@ -2,7 +2,7 @@
 # End-to-end: `coinspect run --out` records run.rawlog; `coinspect eval` scores it again, finds
 # the recorded score (exit 0, "equal") and writes eval.json and coverage.csv. A truncated copy of
 # the rawlog is evaluated up to the damage: exit 1, the message names the objects read and the
-# byte offset. Usage: eval_test.sh <coinspect> <source dir> <scratch dir>
+# byte offset; so is a copy with a damaged class name, whose message eval.json holds. Usage: eval_test.sh <coinspect> <source dir> <scratch dir>
 set -euo pipefail
 coinspect=$1
 source_dir=$2
@@ -44,4 +44,22 @@ grep -Eq 'rawlog damaged: .*cut\.rawlog: [0-9]+ objects read, damage at byte off
 grep -Eq '^read +[0-9]+ objects to t = [0-9.]+ s, then DAMAGED at byte offset [0-9]+' \
   "$out/cut.log" || { echo "no damaged read line"; exit 1; }
 grep -Eq '^re-scored +Q = ' "$out/cut.log" || { echo "no results before the damage"; exit 1; }
+
+# A damaged class name mid-file: the name's bytes reach the damage message, which must still be
+# written into eval.json (a byte that is not UTF-8 once left the file empty), escaped as \xNN.
+gzip -dc "$out/run/run.rawlog" > "$out/named.raw"
+offset=$(grep -boa 'CObservationIMU' "$out/named.raw" | sed -n '50{s/:.*//;p}')
+[[ -n $offset ]] || { echo "no 50th CObservationIMU in the rawlog"; exit 1; }
+printf '\x90' | dd of="$out/named.raw" bs=1 seek="$offset" conv=notrunc status=none
+gzip -c "$out/named.raw" > "$out/named.rawlog"
+set +e
+"$coinspect" eval "$out/named.rawlog" --out "$out/named" > "$out/named.log" 2> "$out/named.err"
+status=$?
+set -e
+cat "$out/named.err"
+[[ $status -eq 1 ]] || { echo "damaged class name: exit status $status, expected 1"; exit 1; }
+grep -qF 'mrpt::obs::\\x90ObservationIMU' "$out/named/eval.json" ||
+  { echo "eval.json lacks the escaped class name"; exit 1; }
+grep -q '"clean": false' "$out/named/eval.json" || { echo "eval.json lacks clean: false"; exit 1; }
+[[ $(tail -1 "$out/named/eval.json") == "}" ]] || { echo "eval.json is cut short"; exit 1; }
 echo "eval end-to-end: ok"

@@ -31,4 +31,19 @@ TEST(Text, SplitsAndTrims) {
   EXPECT_EQ(tokens[3], "d");
 }
 
+TEST(Text, PrintableTextKeepsUtf8AndEscapesTheRest) {
+  EXPECT_EQ(printableText("class 'CPose3D'\tok"), "class 'CPose3D'\tok");
+  EXPECT_EQ(printableText("\xC3\xA9t\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x9A\x81"),
+            "\xC3\xA9t\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x9A\x81");  // été € and a helicopter
+  EXPECT_EQ(printableText(std::string("a\0b\n\x7f", 5)), "a\\x00b\\x0A\\x7F");
+  // Stray continuation byte, truncated sequence, overlong form, surrogate, above U+10FFFF.
+  EXPECT_EQ(printableText("\x90x"), "\\x90x");
+  EXPECT_EQ(printableText("\xE2\x82"), "\\xE2\\x82");
+  EXPECT_EQ(printableText("\xC0\xAF"), "\\xC0\\xAF");
+  EXPECT_EQ(printableText("\xE0\x80\xAF"), "\\xE0\\x80\\xAF");
+  EXPECT_EQ(printableText("\xED\xA0\x80"), "\\xED\\xA0\\x80");
+  EXPECT_EQ(printableText("\xF4\x90\x80\x80"), "\\xF4\\x90\\x80\\x80");
+  EXPECT_EQ(printableText(""), "");
+}
+
 }  // namespace coinspect

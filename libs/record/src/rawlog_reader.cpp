@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "coinspect/core/error.h"
+#include "coinspect/core/text.h"
 #include "coinspect/record/observations.h"
 #include "gzip_streams.h"
 
@@ -63,7 +64,7 @@ void RawlogReader::markDamaged(uint64_t offset, const std::string& why) {
   status_.message = path_.string() + ": " + std::to_string(status_.objects) +
                     " objects read, damage at byte offset " + std::to_string(offset) +
                     " (decompressed stream; compressed offset " +
-                    std::to_string(status_.compressedOffset) + "): " + why;
+                    std::to_string(status_.compressedOffset) + "): " + printableText(why);
 }
 
 std::shared_ptr<mrpt::obs::CObservation> RawlogReader::readObject() {

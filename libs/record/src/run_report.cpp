@@ -93,7 +93,9 @@ std::string runReportJson(const RunReport& report) {
         {"decision_time_p50", report.timing.decisionTimeP50},
         {"decision_time_p95", report.timing.decisionTimeP95}}}};
   if (report.features) json["features"] = featuresJson(*report.features);
-  return json.dump(2) + "\n";
+  // Strings here come from the user (config values, paths): a byte that is not UTF-8 is written
+  // as U+FFFD instead of throwing and losing the report at the end of a mission.
+  return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 void writeRunReportJson(const std::filesystem::path& path, const RunReport& report) {

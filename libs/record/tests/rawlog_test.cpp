@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "coinspect/core/error.h"
+#include "coinspect/core/text.h"
 #include "coinspect/record/rawlog_reader.h"
 #include "coinspect/testing/files.h"
 #include "coinspect/testing/input_errors.h"
@@ -230,6 +231,27 @@ TEST(Rawlog, CorruptedFileStopsWithAMessageInsteadOfCrashing) {
   EXPECT_FALSE(part.status.clean);
   EXPECT_LT(part.objects.size(), 15u);
   EXPECT_MENTIONS(part.status.message, "objects read, damage at byte offset");
+}
+
+// A damaged class name reaches MRPT's exception message byte for byte. The status message must
+// still be valid UTF-8 (eval writes it into eval.json, which refused it and was left empty,
+// found by fuzzing `coinspect eval`) and show the byte.
+TEST(Rawlog, DamagedClassNameIsReportedAsPrintableText) {
+  const auto dir = testing::scratchDir("rawlog_class_name");
+  sample::writeSampleRun(dir / "run.rawlog");
+  std::string data = gunzip(dir / "run.rawlog");
+  const size_t name = data.find("CObservationIMU");
+  ASSERT_NE(name, std::string::npos);
+  data[name] = static_cast<char>(0x90);
+  gzFile f = gzopen((dir / "bad.rawlog").string().c_str(), "wb");
+  ASSERT_TRUE(f);
+  ASSERT_EQ(gzwrite(f, data.data(), static_cast<unsigned>(data.size())),
+            static_cast<int>(data.size()));
+  gzclose(f);
+  const auto part = readAll(dir / "bad.rawlog");
+  EXPECT_FALSE(part.status.clean);
+  EXPECT_MENTIONS(part.status.message, "\\x90Observation");
+  EXPECT_EQ(printableText(part.status.message), part.status.message);
 }
 
 TEST(Rawlog, KilledWriterLeavesAReadablePrefixUpToTheLastFlush) {

@@ -152,6 +152,19 @@ TEST(RunReport, TextIsSortedAndEqualForEqualReports) {
   EXPECT_EQ(a, b);
 }
 
+// A config file named in Latin-1 (or a value with such a byte) must not cost the report at the
+// end of a mission: nlohmann::json throws on invalid UTF-8 unless told to replace it.
+TEST(RunReport, BytesThatAreNotUtf8AreReplacedNotFatal) {
+  auto r = sampleReport();
+  r.configFile = "config/c\xF6nfig.ini";
+  r.config["mission"]["note"] = "\x90";
+  std::string text;
+  ASSERT_NO_THROW(text = runReportJson(r));
+  const auto json = nlohmann::json::parse(text);
+  EXPECT_EQ(json["config"]["file"], "config/c\xEF\xBF\xBDnfig.ini");  // U+FFFD
+  EXPECT_EQ(json["config"]["values"]["mission"]["note"], "\xEF\xBF\xBD");
+}
+
 TEST(RunReport, WritesTheFile) {
   const auto path = std::filesystem::temp_directory_path() / "coinspect_run_report_test.json";
   writeRunReportJson(path, sampleReport());

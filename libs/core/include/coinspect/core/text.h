@@ -21,4 +21,9 @@ std::optional<bool> parseBool(std::string_view text);
 
 std::string toLower(std::string_view text);
 
+// Text from a damaged or foreign file made safe to print and to store in JSON: valid UTF-8 and
+// tab are kept, every other control character and every byte that is not part of a valid UTF-8
+// sequence becomes \xNN (nlohmann::json refuses to write invalid UTF-8).
+std::string printableText(std::string_view bytes);
+
 }  // namespace coinspect
