@@ -1,7 +1,7 @@
 // Each subcommand of the coinspect tool registers itself on the root CLI11 app.
 // A command's callback returns normally on success and throws on failure; main() turns
-// InputError into a one-line message and exit code 2. A command that has done its work and
-// printed its results but must end with another status throws CommandStatus.
+// InputError, and a bad command line, into a one-line message and exit code 2. A command that has
+// done its work and printed its results but must end with another status throws CommandStatus.
 #pragma once
 
 #include <CLI/CLI.hpp>

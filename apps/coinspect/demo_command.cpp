@@ -18,6 +18,7 @@
 #include "coinspect/world/ray_caster.h"
 #include "coinspect/world/scenario_source.h"
 #include "commands.h"
+#include "option_checks.h"
 
 namespace coinspect::app {
 
@@ -143,7 +144,9 @@ void addDemoCommand(CLI::App& root) {
       "demo", "Score ideal camera captures on a scenario and print a summary (the main job)");
   demo->add_option("--scenario", options->scenario, "generator name, scenario.ini or CARIC folder")
       ->capture_default_str();
-  demo->add_option("--seed", options->seed, "generator seed")->capture_default_str();
+  demo->add_option("--seed", options->seed, "generator seed")
+      ->check(seedNumber())
+      ->capture_default_str();
   demo->add_option("--mode", options->mode, "scoring mode: caric or strict")->capture_default_str();
   demo->add_option("--out", options->out, "folder for the picture")->capture_default_str();
   demo->add_option("--width", options->width, "picture width (px)")

@@ -22,7 +22,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    return app.exit(error);
+    // CLI11 prints the message (or the help) and has its own codes (105 for a failed check, 109
+    // for an unknown option, ...); every bad command line is bad input, as the help says: 2.
+    return app.exit(error) == 0 ? 0 : 2;
   } catch (const coinspect::app::CommandStatus& done) {
     return done.status;
   } catch (const coinspect::InputError& error) {

@@ -12,6 +12,7 @@
 #include "coinspect/eval/run_scene3d.h"
 #include "coinspect/eval/run_tracks.h"
 #include "commands.h"
+#include "option_checks.h"
 #include "picture_options.h"
 #include "progress.h"
 #include "recorded_run.h"
@@ -106,7 +107,7 @@ void addReplayCommand(CLI::App& root) {
   replay->add_option("--out", options->out,
                      "folder whose frames/ subfolder gets the frames (default: the rawlog's)");
   replay->add_option("--fps", options->fps, "frames per second of mission time")
-      ->check(CLI::Range(0.01, 1000.0))
+      ->check(finiteNumberIn(0.01, 1000.0))
       ->capture_default_str();
   replay->add_option("--size", options->size, "frame size, WIDTHxHEIGHT in pixels")
       ->capture_default_str();

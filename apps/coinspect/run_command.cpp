@@ -11,6 +11,7 @@
 #include "coinspect/sim/mission.h"
 #include "coinspect/strategies/builtin.h"
 #include "commands.h"
+#include "option_checks.h"
 #include "progress.h"
 #include "run_outputs.h"
 
@@ -94,7 +95,8 @@ void addRunCommand(CLI::App& root) {
   auto* run = root.add_subcommand("run", "Fly a mission from a config file and print a summary");
   run->add_option("config", options->config, "mission INI file (see config/)")->required();
   run->add_option("--set", options->overrides, "override a key: section.key=value (repeatable)");
-  run->add_option("--seed", options->seed, "run seed (replaces [mission] seed)");
+  run->add_option("--seed", options->seed, "run seed (replaces [mission] seed)")
+      ->check(seedNumber());
   run->add_option("--out", options->out,
                   "folder for run.rawlog, summary.txt, events.csv, score.csv, report.json, "
                   "<unit>.tum");

@@ -20,6 +20,7 @@
 #include "coinspect/world/scenario_files.h"
 #include "coinspect/world/scenario_source.h"
 #include "commands.h"
+#include "option_checks.h"
 
 namespace coinspect::app {
 namespace {
@@ -222,6 +223,7 @@ void addScenarioCommand(CLI::App& root) {
   generate->add_option("name", options->name, "Generator name (see `coinspect scenario list`)")
       ->required();
   generate->add_option("--seed", options->seed, "Seed: varies details, not the shape")
+      ->check(seedNumber())
       ->capture_default_str();
   generate->add_option("--out", options->out, "Output folder (created if missing)")->required();
   generate->callback([options]() { runGenerate(*options); });
@@ -229,13 +231,16 @@ void addScenarioCommand(CLI::App& root) {
   CLI::App* info = scenario->add_subcommand(
       "info", "Describe a scenario: extent, boxes, interest points, fleet, budget, hash");
   info->add_option("source", options->source, kSourceHelp)->required();
-  info->add_option("--seed", options->seed, "Seed (generator names only)")->capture_default_str();
+  info->add_option("--seed", options->seed, "Seed (generator names only)")
+      ->check(seedNumber())
+      ->capture_default_str();
   info->callback([options]() { runInfo(*options); });
 
   CLI::App* exporter = scenario->add_subcommand(
       "export", "Export a scenario's meshes (one STL or PLY) and interest points (PCD or CSV)");
   exporter->add_option("source", options->source, kSourceHelp)->required();
   exporter->add_option("--seed", options->seed, "Seed (generator names only)")
+      ->check(seedNumber())
       ->capture_default_str();
   exporter->add_option("--mesh", options->mesh, "Mesh output: .stl (binary) or .ply");
   exporter->add_option("--points", options->points,
@@ -248,7 +253,9 @@ void addScenarioCommand(CLI::App& root) {
       "Estimate the best score reachable by static views whose body keeps a clearance from the "
       "structure (doc/scoring.md)");
   bound->add_option("source", options->source, kSourceHelp)->required();
-  bound->add_option("--seed", options->seed, "Seed (generator names only)")->capture_default_str();
+  bound->add_option("--seed", options->seed, "Seed (generator names only)")
+      ->check(seedNumber())
+      ->capture_default_str();
   bound
       ->add_option("--clearance", options->clearances,
                    "Clearances from the mesh to evaluate, m, comma-separated")

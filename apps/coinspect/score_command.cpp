@@ -17,6 +17,7 @@
 #include "coinspect/world/ray_caster.h"
 #include "coinspect/world/scenario_source.h"
 #include "commands.h"
+#include "option_checks.h"
 
 namespace coinspect::app {
 namespace {
@@ -301,7 +302,8 @@ void addScoreCommand(CLI::App& root) {
       ->add_option("--scenario", options->scenario,
                    "CARIC folder, scenario.ini (or its folder) or generator name")
       ->required();
-  command->add_option("--seed", options->seed, "Generator seed (generator names only)");
+  command->add_option("--seed", options->seed, "Generator seed (generator names only)")
+      ->check(seedNumber());
   command->add_option("--unit", options->unit, "Unit whose camera scores lines without \"unit\"");
   command->add_option("--mode", options->mode, "Scoring mode: caric (reference) or strict")
       ->check(CLI::IsMember({"caric", "strict"}));

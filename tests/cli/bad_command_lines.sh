@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Bad command lines: exit status 2 and a message naming the option and the value.
+#   bad_command_lines.sh COINSPECT
+set -euo pipefail
+coinspect=$1
+expect=$(dirname "$0")/expect.sh
+bash "$expect" 2 "--seed: '-1' is not a seed" "$coinspect" scenario info slei-a --seed -1
+bash "$expect" 2 "--seed: '99999999999999999999' is not a seed" \
+  "$coinspect" scenario generate slei-a --seed 99999999999999999999 --out unused
+bash "$expect" 2 "--seed: '1x' is not a seed" "$coinspect" run config.ini --seed 1x
+bash "$expect" 2 "--seed: '-2' is not a seed" "$coinspect" demo --seed -2
+bash "$expect" 2 "--seed: '-3' is not a seed" "$coinspect" score --scenario hangar --seed -3
+bash "$expect" 0 "content hash" "$coinspect" scenario info slei-a --seed 18446744073709551615
+bash "$expect" 2 "--fps: 'nan' is not a finite number from 0.01 to 1000" \
+  "$coinspect" replay run.rawlog --fps nan
+bash "$expect" 2 "--fps: 'inf' is not a finite number" "$coinspect" replay run.rawlog --fps inf
+bash "$expect" 2 "not expected: --bogus" "$coinspect" run config.ini --bogus
+bash "$expect" 2 "bogus not in" "$coinspect" score --scenario hangar --mode bogus
+echo "bad command lines: ok"
