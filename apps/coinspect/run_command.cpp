@@ -39,7 +39,9 @@ void flyWithProgress(sim::Mission& mission) {
   double nextSecond = 1.0;
   int nextTenth = 1;
   while (!mission.finished()) {
-    const double tenthAt = total * nextTenth / 10.0;
+    // Past the last tenth only the seconds remain: a budget shorter than the time to take-off
+    // puts every tenth before the present, and stopping there again would never step.
+    const double tenthAt = nextTenth <= 10 ? total * nextTenth / 10.0 : nextSecond;
     mission.runUntil(std::min(nextSecond, tenthAt));
     const auto summary = mission.summary();
     if (!totalKnown && summary.started) {

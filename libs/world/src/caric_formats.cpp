@@ -456,6 +456,11 @@ std::vector<CaricNetworkUnit> readCaricNetwork(const std::filesystem::path& path
     c.gimbalPitchMax = rad(v[13]);
     c.gimbalYawMax = rad(v[14]);
     c.gimbalRateMax = rad(v[15]);
+    // Checked here too (the scenario checks the fleet again), to name the line.
+    const std::string where = lineName(line) + " (unit '" + unit.name + "')";
+    if (unit.antennaOffset < 0.0)
+      throw InputError(source, where, "field 3 (AntOffset) must not be negative");
+    validateCamera(c, source, where);
     units.push_back(unit);
   }
   if (units.empty()) throw InputError(source, "", "no units");

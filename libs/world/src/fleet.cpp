@@ -62,22 +62,25 @@ void validateFleet(const std::vector<UnitSpec>& fleet, const std::string& source
     requireFinite(unit.antennaOffset, source, where, "antenna offset");
     if (unit.antennaOffset < 0.0)
       throw InputError(source, where, "antenna offset must not be negative");
-    const CameraSpec& c = unit.camera;
-    requirePositive(c.horizontalFov, source, where, "horizontal FOV");
-    requirePositive(c.verticalFov, source, where, "vertical FOV");
-    if (c.horizontalFov >= M_PI || c.verticalFov >= M_PI)
-      throw InputError(source, where, "a field of view must be below 180 deg");
-    if (!c.positionInBody.allFinite())
-      throw InputError(source, where, "camera position is not finite");
-    requirePositive(c.exposureTime, source, where, "exposure time");
-    requirePositive(c.triggerInterval, source, where, "trigger interval");
-    requirePositive(c.focalLength, source, where, "focal length");
-    requirePositive(c.pixelSize, source, where, "pixel size");
-    requirePositive(c.desiredMmPerPixel, source, where, "desired mm per pixel");
-    requirePositive(c.gimbalPitchMax, source, where, "gimbal pitch limit");
-    requirePositive(c.gimbalYawMax, source, where, "gimbal yaw limit");
-    requirePositive(c.gimbalRateMax, source, where, "gimbal rate limit");
+    validateCamera(unit.camera, source, where);
   }
+}
+
+void validateCamera(const CameraSpec& c, const std::string& source, const std::string& where) {
+  requirePositive(c.horizontalFov, source, where, "horizontal FOV");
+  requirePositive(c.verticalFov, source, where, "vertical FOV");
+  if (c.horizontalFov >= M_PI || c.verticalFov >= M_PI)
+    throw InputError(source, where, "a field of view must be below 180 deg");
+  if (!c.positionInBody.allFinite())
+    throw InputError(source, where, "camera position is not finite");
+  requirePositive(c.exposureTime, source, where, "exposure time");
+  requirePositive(c.triggerInterval, source, where, "trigger interval");
+  requirePositive(c.focalLength, source, where, "focal length");
+  requirePositive(c.pixelSize, source, where, "pixel size");
+  requirePositive(c.desiredMmPerPixel, source, where, "desired mm per pixel");
+  requirePositive(c.gimbalPitchMax, source, where, "gimbal pitch limit");
+  requirePositive(c.gimbalYawMax, source, where, "gimbal yaw limit");
+  requirePositive(c.gimbalRateMax, source, where, "gimbal rate limit");
 }
 
 }  // namespace coinspect::world

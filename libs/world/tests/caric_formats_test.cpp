@@ -348,6 +348,19 @@ TEST(CaricNetwork, ErrorsNameFileAndLine) {
   message = messageOf([&] { readCaricNetwork(dir / "dup.txt"); });
   EXPECT_MENTIONS(message, "line 2");
   EXPECT_MENTIONS(message, "duplicate");
+
+  // Out-of-range values name the line and the unit (they once named only the scenario folder).
+  writeFile(dir / "fov.txt",
+            good + "c,peer,0.2,80,-1,0.2,0.0,-0.3,0.001,0.1,0.016,4.35e-6,2.0,80,90,60\n");
+  message = messageOf([&] { readCaricNetwork(dir / "fov.txt"); });
+  EXPECT_MENTIONS(message, "fov.txt");
+  EXPECT_MENTIONS(message, "line 2 (unit 'c')");
+  EXPECT_MENTIONS(message, "vertical FOV must be positive");
+  writeFile(dir / "antenna.txt",
+            "d,peer,-0.2,80,60,0.2,0.0,-0.3,0.001,0.1,0.016,4.35e-6,2.0,80,90,60\n");
+  message = messageOf([&] { readCaricNetwork(dir / "antenna.txt"); });
+  EXPECT_MENTIONS(message, "line 1 (unit 'd')");
+  EXPECT_MENTIONS(message, "AntOffset");
 }
 
 // ----------------------------------------------------------------------------- launch

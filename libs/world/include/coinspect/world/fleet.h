@@ -42,4 +42,8 @@ struct UnitSpec {
 // same name, non-finite values, non-positive camera parameters or FOV >= 180 deg.
 void validateFleet(const std::vector<UnitSpec>& fleet, const std::string& source);
 
+// The camera part of validateFleet (non-positive parameters, FOV >= 180 deg, a non-finite
+// position), for readers that can name the line: throws InputError(source, where, ...).
+void validateCamera(const CameraSpec& camera, const std::string& source, const std::string& where);
+
 }  // namespace coinspect::world
