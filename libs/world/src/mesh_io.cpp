@@ -101,8 +101,11 @@ TriangleMesh loadMesh(const std::filesystem::path& path, const MeshTransform& tr
   // Return Collada Z_UP files in their authored frame: Assimp would otherwise rotate them to
   // Y-up, but every coinspect frame is Z-up.
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+  // Validation runs before the other steps: on a damaged file (a face index out of range, a
+  // PLY cut short) Triangulate and JoinIdenticalVertices crash the process instead of failing.
   const aiScene* scene =
-      importer.ReadFile(source, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+      importer.ReadFile(source, aiProcess_ValidateDataStructure | aiProcess_Triangulate |
+                                    aiProcess_JoinIdenticalVertices);
   if (scene == nullptr || scene->mRootNode == nullptr) {
     const std::string reason = importer.GetErrorString();
     throw InputError(source, "",
