@@ -103,6 +103,23 @@ TEST(Observations, LinksRoundTrip) {
   EXPECT_EQ(c->changes, o.changes);
 }
 
+// A damaged boolean byte (here `linked`, the last field before MRPT's end flag) is refused: it
+// once became a bool that was neither true nor false (UBSan: "not a valid value for type bool").
+TEST(Observations, ABooleanByteOtherThanZeroOrOneIsDamage) {
+  CObservationCoinspectLinks o;
+  setCommon(o, "gcs.links", 1.0);
+  o.changes = {{"jurong", "gcs", true}};
+  mrpt::io::CMemoryStream buffer;
+  auto archive = mrpt::serialization::archiveFrom(buffer);
+  archive << o;
+  auto* bytes = static_cast<uint8_t*>(buffer.getRawBufferData());
+  const size_t linked = buffer.getTotalBytesCount() - 2;
+  ASSERT_EQ(bytes[linked], 1u);
+  bytes[linked] = 79;
+  buffer.Seek(0);
+  EXPECT_THROW(archive.ReadObject(), std::exception);
+}
+
 TEST(Observations, MessagesRoundTrip) {
   CObservationCoinspectMessages o;
   setCommon(o, "gcs.messages", 2.0);

@@ -9,6 +9,8 @@
 #include <mrpt/serialization/CArchive.h>
 
 #include <ostream>
+#include <stdexcept>
+#include <string>
 
 using mrpt::serialization::CArchive;
 
@@ -33,6 +35,15 @@ void readVector(CArchive& in, std::vector<T>& items, ReadOne readOne) {
     readOne(item);
     items.push_back(std::move(item));
   }
+}
+
+// MRPT reads a bool straight into its byte, so a damaged byte other than 0 or 1 became a bool
+// that is neither (undefined behaviour; found by fuzzing `coinspect eval` under UBSan). Read the
+// byte (MRPT writes true as 1) and refuse the others: the reader reports the damage there.
+bool readBool(CArchive& in) {
+  const auto byte = in.ReadAs<uint8_t>();
+  if (byte > 1) throw std::runtime_error("a boolean field holds the byte " + std::to_string(byte));
+  return byte == 1;
 }
 
 template <size_t N>
@@ -131,7 +142,10 @@ void CObservationCoinspectCapture::serializeFrom(CArchive& in, uint8_t version) 
   readArray(in, angularVelocity);
   in >> gimbalYaw >> gimbalPitch >> gimbalYawRate >> gimbalPitchRate;
   readVector(in, points, [&](ScoredPointRecord& p) {
-    in >> p.index >> p.seen >> p.notSeenReason >> p.qBlur >> p.qRes >> p.score >> p.counted;
+    in >> p.index;
+    p.seen = readBool(in);
+    in >> p.notSeenReason >> p.qBlur >> p.qRes >> p.score;
+    p.counted = readBool(in);
   });
   hasBodyState = version >= 1;
   bodyPosition = {0.0, 0.0, 0.0};
@@ -189,7 +203,10 @@ void CObservationCoinspectLinks::serializeFrom(CArchive& in, uint8_t version) {
   switch (version) {
     case 0:
       readCommon(in, *this);
-      readVector(in, changes, [&](LinkChangeRecord& c) { in >> c.unitA >> c.unitB >> c.linked; });
+      readVector(in, changes, [&](LinkChangeRecord& c) {
+        in >> c.unitA >> c.unitB;
+        c.linked = readBool(in);
+      });
       break;
     default:
       MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
@@ -224,7 +241,8 @@ void CObservationCoinspectMessages::serializeFrom(CArchive& in, uint8_t version)
     case 0:
       readCommon(in, *this);
       readVector(in, messages, [&](MessageRecord& m) {
-        in >> m.from >> m.to >> m.topic >> m.bytes >> m.delivered;
+        in >> m.from >> m.to >> m.topic >> m.bytes;
+        m.delivered = readBool(in);
       });
       break;
     default:
