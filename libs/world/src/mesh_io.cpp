@@ -19,6 +19,21 @@ namespace {
 using detail::putF32;
 using detail::putU32;
 
+// The loader's primitive types are trusted by Triangulate, which aborts on an assertion when
+// they announce polygons that no face has (a damaged binary PLY with faces of no corner did):
+// take them from the faces.
+void setPrimitiveTypesFromFaces(aiMesh& mesh) {
+  unsigned types = 0;
+  for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+    const unsigned corners = mesh.mFaces[f].mNumIndices;
+    if (corners == 1) types |= aiPrimitiveType_POINT;
+    if (corners == 2) types |= aiPrimitiveType_LINE;
+    if (corners == 3) types |= aiPrimitiveType_TRIANGLE;
+    if (corners > 3) types |= aiPrimitiveType_POLYGON;
+  }
+  mesh.mPrimitiveTypes = types;
+}
+
 Eigen::Matrix4d toEigen(const aiMatrix4x4& m) {
   Eigen::Matrix4d out;
   out << m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4, m.c1, m.c2, m.c3, m.c4, m.d1, m.d2, m.d3,
@@ -101,11 +116,14 @@ TriangleMesh loadMesh(const std::filesystem::path& path, const MeshTransform& tr
   // Return Collada Z_UP files in their authored frame: Assimp would otherwise rotate them to
   // Y-up, but every coinspect frame is Z-up.
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
-  // Validation runs before the other steps: on a damaged file (a face index out of range, a
-  // PLY cut short) Triangulate and JoinIdenticalVertices crash the process instead of failing.
-  const aiScene* scene =
-      importer.ReadFile(source, aiProcess_ValidateDataStructure | aiProcess_Triangulate |
-                                    aiProcess_JoinIdenticalVertices);
+  // Validation first, then the other steps: on a damaged file (a face index out of range, a PLY
+  // cut short) Triangulate and JoinIdenticalVertices crash the process instead of failing.
+  const aiScene* scene = importer.ReadFile(source, aiProcess_ValidateDataStructure);
+  if (scene != nullptr && scene->mRootNode != nullptr) {
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m)
+      setPrimitiveTypesFromFaces(*scene->mMeshes[m]);
+    scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+  }
   if (scene == nullptr || scene->mRootNode == nullptr) {
     const std::string reason = importer.GetErrorString();
     throw InputError(source, "",

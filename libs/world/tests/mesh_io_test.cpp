@@ -237,6 +237,19 @@ TEST(MeshIo, DamagedPlyFilesAreErrorsNotCrashes) {
   }
 }
 
+// A face of no corner made Assimp announce polygons that no face has, and its Triangulate then
+// aborted on an assertion (found by fuzzing binary PLY; the same in ASCII): the face is skipped.
+TEST(MeshIo, AFaceOfNoCornerIsSkipped) {
+  const fs::path dir = testing::scratchDir("mesh_io_empty_face");
+  writeFile(dir / "tetrahedron.ply",
+            "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+            "property float z\nelement face 5\nproperty list uchar int vertex_indices\n"
+            "end_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n0\n3 1 2 3\n3 0 3 2\n");
+  const TriangleMesh loaded = loadMesh(dir / "tetrahedron.ply");
+  EXPECT_EQ(loaded.triangleCount(), 4u);
+  EXPECT_EQ(loaded.vertices.size(), 4u);
+}
+
 TEST(MeshIo, WriteToUnwritablePlaceNamesIt) {
   const fs::path path = testing::scratchDir("mesh_io_unwritable") / "no" / "such" / "dir.stl";
   EXPECT_THROW(writeStl(sampleBox(), path), InputError);
