@@ -21,6 +21,11 @@ hash_folder=$(sed -n 's/^content hash: //p' <<<"$from_folder")
 hash_generator=$(sed -n 's/^content hash: //p' <<<"$from_generator")
 [[ -n "$hash_folder" && "$hash_folder" == "$hash_generator" ]] ||
   { echo "FAIL: hash $hash_folder (folder) != $hash_generator (generator)" >&2; exit 1; }
+# Read from inside its folder by a bare file name, whose folder is then empty: that once failed
+# with "filesystem error: cannot make absolute path".
+hash_inside=$(cd "$out" && "$coinspect" scenario info scenario.ini | sed -n 's/^content hash: //p')
+[[ "$hash_inside" == "$hash_generator" ]] ||
+  { echo "FAIL: hash $hash_inside (from inside the folder) != $hash_generator" >&2; exit 1; }
 # A different seed is a different scenario.
 hash_other=$("$coinspect" scenario info mbs --seed 4 | sed -n 's/^content hash: //p')
 [[ "$hash_other" != "$hash_generator" ]] || { echo "FAIL: seed 4 has the seed 3 hash" >&2; exit 1; }

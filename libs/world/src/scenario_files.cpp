@@ -190,7 +190,8 @@ Scenario loadScenario(const fs::path& iniPath) {
   const auto sections = sectionsInFileOrder(text, source);
 
   Scenario scenario;
-  const fs::path normal = fs::absolute(folder).lexically_normal();
+  // absolute("") throws: a bare file name (read from inside its folder) has an empty parent.
+  const fs::path normal = fs::absolute(folder.empty() ? fs::path(".") : folder).lexically_normal();
   scenario.name = (normal.has_filename() ? normal : normal.parent_path()).filename().string();
   for (const Section& s : sections) {
     const std::string& section = s.name;
