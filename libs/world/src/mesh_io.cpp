@@ -6,12 +6,15 @@
 #include <assimp/Importer.hpp>
 
 #include <cstring>
+#include <fstream>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <unordered_map>
 
 #include "coinspect/core/error.h"
 #include "file_utils.h"
+#include "ply_layout.h"
 
 namespace coinspect::world {
 namespace {
@@ -19,19 +22,14 @@ namespace {
 using detail::putF32;
 using detail::putU32;
 
-// The loader's primitive types are trusted by Triangulate, which aborts on an assertion when
-// they announce polygons that no face has (a damaged binary PLY with faces of no corner did):
-// take them from the faces.
-void setPrimitiveTypesFromFaces(aiMesh& mesh) {
-  unsigned types = 0;
-  for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
-    const unsigned corners = mesh.mFaces[f].mNumIndices;
-    if (corners == 1) types |= aiPrimitiveType_POINT;
-    if (corners == 2) types |= aiPrimitiveType_LINE;
-    if (corners == 3) types |= aiPrimitiveType_TRIANGLE;
-    if (corners > 3) types |= aiPrimitiveType_POLYGON;
-  }
-  mesh.mPrimitiveTypes = types;
+// A face of no corner (a damaged PLY: a binary one, or an ASCII one cut before its faces) passes
+// Assimp's validation, and its Triangulate then aborts on an assertion: refuse it first.
+void requireCornersOnEveryFace(const aiScene& scene, const std::string& source) {
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m)
+    for (unsigned f = 0; f < scene.mMeshes[m]->mNumFaces; ++f)
+      if (scene.mMeshes[m]->mFaces[f].mNumIndices == 0)
+        throw InputError(source, "face " + std::to_string(f),
+                         "a face with no corner (a file cut short?)");
 }
 
 Eigen::Matrix4d toEigen(const aiMatrix4x4& m) {
@@ -104,6 +102,16 @@ struct Flattener {
   }
 };
 
+// A PLY file's layout is checked before Assimp reads it (ply_layout.h): cut short, Assimp's
+// reader hangs or pads what is missing.
+void checkIfPly(const std::filesystem::path& path, const std::string& source) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[5] = {};
+  in.read(magic, sizeof magic);
+  if (std::string_view(magic, 4) == "ply\n" || std::string_view(magic, 5) == "ply\r\n")
+    detail::checkPlyLayout(detail::readWholeFile(path, "mesh file"), source);
+}
+
 }  // namespace
 
 TriangleMesh loadMesh(const std::filesystem::path& path, const MeshTransform& transform) {
@@ -111,6 +119,7 @@ TriangleMesh loadMesh(const std::filesystem::path& path, const MeshTransform& tr
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error))
     throw InputError(source, "", "no such mesh file");
+  checkIfPly(path, source);
 
   Assimp::Importer importer;
   // Return Collada Z_UP files in their authored frame: Assimp would otherwise rotate them to
@@ -120,8 +129,7 @@ TriangleMesh loadMesh(const std::filesystem::path& path, const MeshTransform& tr
   // cut short) Triangulate and JoinIdenticalVertices crash the process instead of failing.
   const aiScene* scene = importer.ReadFile(source, aiProcess_ValidateDataStructure);
   if (scene != nullptr && scene->mRootNode != nullptr) {
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m)
-      setPrimitiveTypesFromFaces(*scene->mMeshes[m]);
+    requireCornersOnEveryFace(*scene, source);
     scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
   }
   if (scene == nullptr || scene->mRootNode == nullptr) {

@@ -10,6 +10,7 @@
 
 #include "coinspect/core/error.h"
 #include "coinspect/testing/files.h"
+#include "coinspect/testing/input_errors.h"
 #include "coinspect/testing/paths.h"
 #include "test_meshes.h"
 
@@ -219,7 +220,7 @@ TEST(MeshIo, EmptyAndGarbageFilesNameThemselves) {
 
 // Damaged binary PLY files made Assimp's post-processing crash (segfault, or abort on an
 // assertion) before it returned anything: found by fuzzing, 50 of 200 mutated files. Assimp's
-// own validation, run first, turns them into errors.
+// own validation, run first, turns the far index into an error (the cut file is refused before).
 TEST(MeshIo, DamagedPlyFilesAreErrorsNotCrashes) {
   const fs::path dir = testing::scratchDir("mesh_io_damaged_ply");
   writePly(sampleBox(), dir / "box.ply");
@@ -237,17 +238,61 @@ TEST(MeshIo, DamagedPlyFilesAreErrorsNotCrashes) {
   }
 }
 
-// A face of no corner made Assimp announce polygons that no face has, and its Triangulate then
-// aborted on an assertion (found by fuzzing binary PLY; the same in ASCII): the face is skipped.
-TEST(MeshIo, AFaceOfNoCornerIsSkipped) {
+// A face of no corner passed Assimp's validation and its Triangulate then aborted on an assertion
+// (found by fuzzing binary PLY).
+TEST(MeshIo, AFaceOfNoCornerIsAnError) {
   const fs::path dir = testing::scratchDir("mesh_io_empty_face");
-  writeFile(dir / "tetrahedron.ply",
+  const fs::path path = dir / "empty_face.ply";
+  writeFile(path,
             "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
             "property float z\nelement face 5\nproperty list uchar int vertex_indices\n"
             "end_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n0\n3 1 2 3\n3 0 3 2\n");
-  const TriangleMesh loaded = loadMesh(dir / "tetrahedron.ply");
-  EXPECT_EQ(loaded.triangleCount(), 4u);
-  EXPECT_EQ(loaded.vertices.size(), 4u);
+  EXPECT_MENTIONS(loadError(path), "face 2: a face with no corner");
+}
+
+// A PLY file cut short: inside its header Assimp's reader never returned; in its body Assimp
+// padded what was missing and the file loaded as another mesh. Its layout is checked first.
+TEST(MeshIo, PlyFilesCutShortAreErrors) {
+  const fs::path dir = testing::scratchDir("mesh_io_cut_ply");
+  writePly(sampleBox(), dir / "box.ply");
+  const std::string binary = testing::readFile(dir / "box.ply");
+  const std::string ascii =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+      "property double z\nelement face 1\nproperty list uchar uint vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const struct {
+    const char* name;
+    std::string bytes;
+    const char* expected;
+  } cases[] = {
+      {"header.ply", binary.substr(0, binary.find("property float y")), "no end_header line"},
+      {"binary_vertices.ply", binary.substr(0, binary.find("end_header") + 11 + 40),
+       "ends in element 'vertex' 3 of 8"},
+      {"binary_faces.ply", binary.substr(0, binary.size() - 2), "ends in element 'face' 11 of 12"},
+      {"ascii_vertices.ply", ascii.substr(0, ascii.find("0 1 0")),
+       "ends in element 'vertex' 2 of 3"},
+      {"ascii_faces.ply", ascii.substr(0, ascii.size() - 3), "ends in element 'face' 0 of 1"},
+  };
+  for (const auto& c : cases) {
+    writeFile(dir / c.name, c.bytes);
+    const std::string message = loadError(dir / c.name);
+    EXPECT_MENTIONS(message, c.name);
+    EXPECT_MENTIONS(message, c.expected);
+  }
+  writeFile(dir / "ascii.ply", ascii);
+  EXPECT_EQ(loadMesh(dir / "ascii.ply").triangleCount(), 1u);
+}
+
+TEST(MeshIo, PlyHeaderErrorsNameTheLine) {
+  const fs::path dir = testing::scratchDir("mesh_io_ply_header");
+  const std::string start = "ply\nformat ascii 1.0\nelement vertex 3\n";
+  const std::string rest = "property float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+  writeFile(dir / "type.ply", start + "property float80 x\n" + rest);
+  EXPECT_MENTIONS(loadError(dir / "type.ply"), "line 4: not a property of a known type");
+  writeFile(dir / "count.ply", "ply\nformat ascii 1.0\nelement vertex many\nend_header\n");
+  EXPECT_MENTIONS(loadError(dir / "count.ply"), "line 3: an element needs a name and a count");
+  writeFile(dir / "format.ply", "ply\nformat binary_middle_endian 1.0\nend_header\n");
+  EXPECT_MENTIONS(loadError(dir / "format.ply"), "unknown PLY format 'binary_middle_endian'");
 }
 
 TEST(MeshIo, WriteToUnwritablePlaceNamesIt) {
