@@ -22,14 +22,14 @@ namespace {
 using detail::putF32;
 using detail::putU32;
 
-// A face of no corner (a damaged PLY: a binary one, or an ASCII one cut before its faces) passes
-// Assimp's validation, and its Triangulate then aborts on an assertion: refuse it first.
+// A face of no corner (a damaged binary PLY whose face records slipped) passes Assimp's
+// validation, and its Triangulate then aborts on an assertion: refuse it first.
 void requireCornersOnEveryFace(const aiScene& scene, const std::string& source) {
   for (unsigned m = 0; m < scene.mNumMeshes; ++m)
     for (unsigned f = 0; f < scene.mMeshes[m]->mNumFaces; ++f)
       if (scene.mMeshes[m]->mFaces[f].mNumIndices == 0)
         throw InputError(source, "face " + std::to_string(f),
-                         "a face with no corner (a file cut short?)");
+                         "a face with no corner (a damaged file?)");
 }
 
 Eigen::Matrix4d toEigen(const aiMatrix4x4& m) {
@@ -125,8 +125,8 @@ TriangleMesh loadMesh(const std::filesystem::path& path, const MeshTransform& tr
   // Return Collada Z_UP files in their authored frame: Assimp would otherwise rotate them to
   // Y-up, but every coinspect frame is Z-up.
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
-  // Validation first, then the other steps: on a damaged file (a face index out of range, a PLY
-  // cut short) Triangulate and JoinIdenticalVertices crash the process instead of failing.
+  // Validation first, then the other steps: on a damaged file (a face index out of range)
+  // Triangulate and JoinIdenticalVertices crash the process instead of failing.
   const aiScene* scene = importer.ReadFile(source, aiProcess_ValidateDataStructure);
   if (scene != nullptr && scene->mRootNode != nullptr) {
     requireCornersOnEveryFace(*scene, source);
