@@ -1,5 +1,6 @@
 #include "ply_layout.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <string_view>
 #include <vector>
