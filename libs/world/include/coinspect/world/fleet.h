@@ -19,11 +19,11 @@ struct CameraSpec {
   double horizontalFov = 80.0 * M_PI / 180.0;
   double verticalFov = 60.0 * M_PI / 180.0;
   Vec3 positionInBody{0.2, 0.0, -0.3};
-  double exposureTime = 0.001;    // s
-  double triggerInterval = 0.1;   // s
-  double focalLength = 0.016;     // m
-  double pixelSize = 4.35e-6;     // m
-  double desiredMmPerPixel = 2.0; // r_des, mm/px
+  double exposureTime = 0.001;     // s
+  double triggerInterval = 0.1;    // s
+  double focalLength = 0.016;      // m
+  double pixelSize = 4.35e-6;      // m
+  double desiredMmPerPixel = 2.0;  // r_des, mm/px
   double gimbalPitchMax = 80.0 * M_PI / 180.0;
   double gimbalYawMax = 90.0 * M_PI / 180.0;
   double gimbalRateMax = 60.0 * M_PI / 180.0;  // rad/s
@@ -33,8 +33,8 @@ struct UnitSpec {
   std::string name;
   UnitRole role = UnitRole::Photographer;
   Vec3 startPosition = Vec3::Zero();
-  double startYaw = 0.0;        // rad
-  double antennaOffset = 0.1;   // m, ppcom antenna offset along each body axis
+  double startYaw = 0.0;       // rad
+  double antennaOffset = 0.1;  // m, ppcom antenna offset along each body axis
   CameraSpec camera;
 };
 
