@@ -6,9 +6,7 @@
 #include <assimp/Importer.hpp>
 
 #include <cstring>
-#include <fstream>
 #include <string>
-#include <string_view>
 #include <system_error>
 #include <unordered_map>
 
@@ -102,16 +100,6 @@ struct Flattener {
   }
 };
 
-// A PLY file's layout is checked before Assimp reads it (ply_layout.h): cut short, Assimp's
-// reader hangs or pads what is missing.
-void checkIfPly(const std::filesystem::path& path, const std::string& source) {
-  std::ifstream in(path, std::ios::binary);
-  char magic[5] = {};
-  in.read(magic, sizeof magic);
-  if (std::string_view(magic, 4) == "ply\n" || std::string_view(magic, 5) == "ply\r\n")
-    detail::checkPlyLayout(detail::readWholeFile(path, "mesh file"), source);
-}
-
 }  // namespace
 
 TriangleMesh loadMesh(const std::filesystem::path& path, const MeshTransform& transform) {
@@ -119,7 +107,8 @@ TriangleMesh loadMesh(const std::filesystem::path& path, const MeshTransform& tr
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error))
     throw InputError(source, "", "no such mesh file");
-  checkIfPly(path, source);
+  // Cut short, a PLY file makes Assimp's reader hang or pad what is missing (ply_layout.h).
+  detail::checkPlyLayout(path, source);
 
   Assimp::Importer importer;
   // Return Collada Z_UP files in their authored frame: Assimp would otherwise rotate them to

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <fstream>
 #include <string_view>
 #include <vector>
 
 #include "coinspect/core/error.h"
 #include "coinspect/core/text.h"
+#include "file_utils.h"
 
 namespace coinspect::world::detail {
 namespace {
@@ -145,8 +147,12 @@ void checkBinaryBody(const std::string& bytes, const Header& header, const std::
 
 }  // namespace
 
-void checkPlyLayout(const std::string& bytes, const std::string& source) {
-  if (bytes.compare(0, 4, "ply\n") != 0 && bytes.compare(0, 5, "ply\r\n") != 0) return;
+void checkPlyLayout(const std::filesystem::path& path, const std::string& source) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[5] = {};
+  in.read(magic, sizeof magic);
+  if (std::string_view(magic, 4) != "ply\n" && std::string_view(magic, 5) != "ply\r\n") return;
+  const std::string bytes = readWholeFile(path, "mesh file");
   const Header header = readHeader(bytes, source);
   if (header.format == "ascii")
     checkAsciiBody(bytes, header, source);

@@ -3,14 +3,15 @@
 // failing, so that a truncated file would load as a smaller or wrong mesh. Found by fuzzing.
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 namespace coinspect::world::detail {
 
-// When `bytes` start as a PLY file ("ply" on the first line): throws InputError naming `source`
-// unless the header ends (end_header) with known formats and property types and the body holds
-// every element it declares (ASCII: enough numbers; binary: enough bytes, list counts read in
-// the file's byte order). Anything else (another format) passes unchecked.
-void checkPlyLayout(const std::string& bytes, const std::string& source);
+// When the file starts as a PLY file ("ply" on the first line; only then is it read whole):
+// throws InputError naming `source` unless the header ends (end_header) with known formats and
+// property types and the body holds every element it declares (ASCII: enough numbers; binary:
+// enough bytes, list counts read in the file's byte order). Other formats pass unchecked.
+void checkPlyLayout(const std::filesystem::path& path, const std::string& source);
 
 }  // namespace coinspect::world::detail
