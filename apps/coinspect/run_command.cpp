@@ -25,6 +25,7 @@ struct RunOptions {
   std::optional<uint64_t> seed;
   std::string out;
   bool quiet = false;
+  int threads = 0;  // 0: one per hardware thread
 };
 
 // Flies the mission in steps of 1 s of simulated time, drawing the progress line (stdout, like
@@ -67,6 +68,7 @@ void runMission(const RunOptions& options) {
   strategies::registerBuiltinStrategies(registry);
   sim::Mission mission(ini, registry, options.seed);
   ini.requireAllKeysUsed();
+  mission.setThreads(static_cast<size_t>(options.threads));
   std::printf("flying     %s: %zu units, %zu interest points, budget %.0f s\n",
               mission.scenario().name.c_str(), mission.scenario().fleet.size(),
               mission.scenario().interestPoints.size(), mission.summary().budget);
@@ -103,6 +105,10 @@ void addRunCommand(CLI::App& root) {
                   "folder for run.rawlog, summary.txt, events.csv, score.csv, report.json, "
                   "<unit>.tum");
   run->add_flag("--quiet", options->quiet, "no progress line while the mission flies");
+  run->add_option("--threads", options->threads,
+                  "threads for the units' decisions and LiDAR sweeps (0, the default: one per "
+                  "hardware thread); the results do not depend on it")
+      ->check(CLI::Range(0, 256));
   run->callback([options] { runMission(*options); });
 }
 

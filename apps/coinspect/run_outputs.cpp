@@ -116,6 +116,7 @@ record::RunReport makeReport(const sim::MissionSummary& s, const Config& ini,
   r.realtimeFactor = s.requestedRealtimeFactor;
   if (s.features.enabled) r.features = makeFeatures(s);
   r.timing.decisions = s.decisionTimes.count;
+  r.timing.threads = s.threads;
   r.timing.decisionTimeMean = s.decisionTimes.mean();
   r.timing.decisionTimeMax = s.decisionTimes.max;
   r.timing.decisionTimeP50 = s.decisionTimes.quantile(0.5);

@@ -14,6 +14,8 @@ bash "$expect" 0 "content hash" "$coinspect" scenario info slei-a --seed 1844674
 bash "$expect" 2 "--fps: 'nan' is not a finite number from 0.01 to 1000" \
   "$coinspect" replay run.rawlog --fps nan
 bash "$expect" 2 "--fps: 'inf' is not a finite number" "$coinspect" replay run.rawlog --fps inf
+bash "$expect" 2 "--threads: Value -1 not in range 0 to 256" "$coinspect" run config.ini --threads -1
+bash "$expect" 2 "--threads: Value two not in range" "$coinspect" run config.ini --threads two
 bash "$expect" 2 "not expected: --bogus" "$coinspect" run config.ini --bogus
 bash "$expect" 2 "bogus not in" "$coinspect" score --scenario hangar --mode bogus
 echo "bad command lines: ok"

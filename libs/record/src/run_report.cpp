@@ -86,6 +86,7 @@ std::string runReportJson(const RunReport& report) {
       {"timing",
        {{"wall_time", report.timing.wallTime},
         {"real_time_factor", report.timing.realTimeFactor},
+        {"threads", report.timing.threads},
         {"stages", report.timing.stages},
         {"decisions", report.timing.decisions},
         {"decision_time_mean", report.timing.decisionTimeMean},

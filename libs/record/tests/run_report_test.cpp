@@ -51,6 +51,7 @@ RunReport sampleReport() {
   r.runMode = "realtime";
   r.realtimeFactor = 2;
   r.timing.decisions = 40;
+  r.timing.threads = 2;
   r.timing.decisionTimeMean = 0.5e-3;
   r.timing.decisionTimeMax = 2e-3;
   return r;
@@ -98,6 +99,7 @@ TEST(RunReport, HasEveryField) {
   EXPECT_EQ(json["run_mode"]["mode"], "realtime");
   EXPECT_EQ(json["run_mode"]["realtime_factor"], 2.0);
   EXPECT_EQ(json["timing"]["decisions"], 40);
+  EXPECT_EQ(json["timing"]["threads"], 2);
   EXPECT_EQ(json["timing"]["decision_time_mean"], 0.5e-3);
   EXPECT_EQ(json["timing"]["decision_time_max"], 2e-3);
   EXPECT_EQ(json.size(), 15u);  // nothing else at the top level

@@ -389,17 +389,34 @@ void Mission::Impl::updateTopology() {
 }
 
 void Mission::Impl::sweepLidars() {
-  std::vector<sensing::SphereOccluder> spheres;
-  for (size_t i = 0; i < units.size(); ++i) {
+  std::vector<size_t> sweeping;
+  for (size_t i = 0; i < units.size(); ++i)
+    if (units[i].lidar && units[i].alive() && tick % units[i].lidarPeriod == 0)
+      sweeping.push_back(i);
+  if (sweeping.empty()) return;
+  const auto stageStart = Clock::now();
+  // Each sweep reads the shared world and writes only its own unit's LiDAR (its own noise), so
+  // the sweeps may run at once; what they publish is then handled in fleet order.
+  std::vector<std::shared_ptr<const agent::KeyFrame>> keyFrames(sweeping.size());
+  const auto sweep = [&](size_t k) {
+    const size_t i = sweeping[k];
     auto& unit = units[i];
-    if (!unit.lidar || !unit.alive() || tick % unit.lidarPeriod != 0) continue;
-    const auto stageStart = Clock::now();
-    spheres.clear();
+    std::vector<sensing::SphereOccluder> spheres;
     for (size_t j = 0; j < units.size(); ++j)
       if (j != i && units[j].vehicle)
         spheres.push_back({units[j].vehicle->state().position, units[j].collisionRadius});
-    auto keyFrame =
+    keyFrames[k] =
         unit.lidar->sweep(*caster, now(), unit.vehicle->state(), spheres, unit.lidarView);
+  };
+  if (workers && sweeping.size() > 1)
+    workers->run(sweeping.size(), sweep);
+  else
+    for (size_t k = 0; k < sweeping.size(); ++k)
+      sweep(k);
+  for (size_t k = 0; k < sweeping.size(); ++k) {
+    const size_t i = sweeping[k];
+    auto& unit = units[i];
+    const auto& keyFrame = keyFrames[k];
     if (recorder) recorder->lidar(unit.spec->name, unit.lidar->lastScan(), keyFrame != nullptr);
     if (keyFrame) {
       COINSPECT_ASSERT(keyFrame->id == unit.keyFrames.size());
@@ -408,8 +425,8 @@ void Mission::Impl::sweepLidars() {
       exchange->publish(static_cast<uint32_t>(i), keyFrame->id, links, aliveFlags(), now());
       ++keyFrameCount;
     }
-    stages.lidar += secondsSince(stageStart);
   }
+  stages.lidar += secondsSince(stageStart);
 }
 
 void Mission::Impl::capture(size_t i) {
@@ -531,10 +548,9 @@ bool Mission::Impl::stepOnce() {
     for (auto& unit : units)
       if (unit.gimbal) unit.gimbal->update(now());
   if (recorder && tick % gimbalPeriod == 0) recorder->gimbals(now(), units);
-  for (size_t i = 0; i < units.size(); ++i) {
+  for (size_t i = 0; i < units.size(); ++i)
     applyDueCommands(i);  // latency mode: earlier decisions whose compute time has passed
-    if (units[i].alive() && tick % units[i].decisionPeriod == 0) decide(i);
-  }
+  decideAll();
   if (recorder) recorder->flushMessages(now());  // what the decisions sent, one record
 
   // The end: the budget on the mission clock is used up (motors stop), or nobody took off.
@@ -624,6 +640,16 @@ double Mission::unitOwnScore(size_t unit) const {
 
 const std::vector<float>& Mission::gcsValues() const {
   return impl_->tally.values();
+}
+
+void Mission::setThreads(size_t threads) {
+  COINSPECT_ASSERT(impl_->tick == 0);
+  const size_t resolved = core::WorkerPool::resolve(threads);
+  impl_->workers = resolved > 1 ? std::make_unique<core::WorkerPool>(resolved) : nullptr;
+}
+
+size_t Mission::threads() const {
+  return impl_->workers ? impl_->workers->threads() : 1;
 }
 
 void Mission::setControlTickObserver(ControlTickObserver observer) {

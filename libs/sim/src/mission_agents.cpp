@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <limits>
 
 #include "mission_impl.h"
@@ -73,28 +74,80 @@ agent::AgentView Mission::Impl::observe(size_t i) {
   return view;
 }
 
-void Mission::Impl::decide(size_t i) {
+void Mission::Impl::decideAll() {
   using Clock = std::chrono::steady_clock;
   const auto stageStart = Clock::now();
-  auto& unit = units[i];
-  auto view = observe(i);
-  const auto decideStart = Clock::now();
-  agent::AgentCommand command = unit.strategy->decide(view);
-  const double computeTime = std::chrono::duration<double>(Clock::now() - decideStart).count();
-  ++decisionTimes.count;
-  decisionTimes.total += computeTime;
-  decisionTimes.max = std::max(decisionTimes.max, computeTime);
-  decisionTimes.samples.push_back(static_cast<float>(computeTime));
-  if (config.runMode != RunMode::Latency) {
-    applyCommand(i, command);
-  } else {
+  std::vector<size_t> deciding;
+  for (size_t i = 0; i < units.size(); ++i)
+    if (units[i].alive() && tick % units[i].decisionPeriod == 0) deciding.push_back(i);
+  const size_t n = deciding.size();
+  std::vector<agent::AgentView> views(n);
+  std::vector<agent::AgentCommand> commands(n);
+  std::vector<double> computeTimes(n);
+  const auto decideOne = [&](size_t k) {
+    const auto decideStart = Clock::now();
+    commands[k] = units[deciding[k]].strategy->decide(views[k]);
+    computeTimes[k] = std::chrono::duration<double>(Clock::now() - decideStart).count();
+  };
+  const auto finish = [&](size_t k) {
+    const size_t i = deciding[k];
+    const double computeTime = computeTimes[k];
+    ++decisionTimes.count;
+    decisionTimes.total += computeTime;
+    decisionTimes.max = std::max(decisionTimes.max, computeTime);
+    decisionTimes.samples.push_back(static_cast<float>(computeTime));
+    if (config.runMode != RunMode::Latency) {
+      applyCommand(i, commands[k]);
+      return;
+    }
     // The command applies at the first tick at or after decision time + compute time, and never
     // before an earlier decision's command of the same unit.
+    auto& unit = units[i];
     long long applyTick = tick + static_cast<long long>(std::ceil(computeTime / step - 1e-9));
     if (!unit.pendingCommands.empty())
       applyTick = std::max(applyTick, unit.pendingCommands.back().applyTick);
-    unit.pendingCommands.push_back({applyTick, std::move(command)});
+    unit.pendingCommands.push_back({applyTick, std::move(commands[k])});
     applyDueCommands(i);  // applies now only if the clock did not move (compute time ~ 0)
+  };
+  if (!workers) {
+    // In fleet order, each unit seeing what the units before it just sent.
+    for (size_t k = 0; k < n; ++k) {
+      views[k] = observe(deciding[k]);
+      decideOne(k);
+      finish(k);
+    }
+  } else {
+    // The same results on several threads. A command reaches another unit's view at this tick
+    // only as a message over a link, so a unit waits only for the earlier units it is linked
+    // with (observed once their commands are applied); the others decide at once. Commands are
+    // applied in fleet order, as above, for the message sequence, events and rawlog order.
+    std::vector<size_t> waitingFor(n, 0);
+    std::vector<std::vector<size_t>> unblocks(n);
+    for (size_t a = 0; a < n; ++a)
+      for (size_t b = a + 1; b < n; ++b)
+        if (links.linked(static_cast<uint32_t>(deciding[a]), static_cast<uint32_t>(deciding[b]))) {
+          ++waitingFor[b];
+          unblocks[a].push_back(b);
+        }
+    std::vector<std::future<void>> decided(n);
+    const auto start = [&](size_t k) {
+      views[k] = observe(deciding[k]);
+      decided[k] = workers->submit([&decideOne, k] { decideOne(k); });
+    };
+    try {
+      for (size_t k = 0; k < n; ++k)
+        if (waitingFor[k] == 0) start(k);
+      for (size_t k = 0; k < n; ++k) {
+        decided[k].get();  // started: every unit it waited for is before it
+        finish(k);
+        for (const size_t b : unblocks[k])
+          if (--waitingFor[b] == 0) start(b);
+      }
+    } catch (...) {
+      for (auto& future : decided)  // the jobs refer to this frame's vectors
+        if (future.valid()) future.wait();
+      throw;
+    }
   }
   stages.decisions += std::chrono::duration<double>(Clock::now() - stageStart).count();
 }

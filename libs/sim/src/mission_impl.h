@@ -13,6 +13,7 @@
 #include "coinspect/comms/key_frame_exchange.h"
 #include "coinspect/comms/link_model.h"
 #include "coinspect/comms/network.h"
+#include "coinspect/core/worker_pool.h"
 #include "coinspect/sensing/camera_model.h"
 #include "coinspect/sensing/inspection_scorer.h"
 #include "coinspect/sensing/score_log.h"
@@ -118,6 +119,10 @@ struct Mission::Impl {
   std::vector<sensing::PointScore> scores;  // buffer
   sensing::Occluders occluders;             // buffer
 
+  // Threads for the units' decisions and LiDAR sweeps (Mission::setThreads); none: all on
+  // the loop's thread.
+  std::unique_ptr<core::WorkerPool> workers;
+
   std::function<void()> controlTickObserver;  // set through Mission::setControlTickObserver
   std::unique_ptr<MissionRecorder> recorder;  // set through Mission::startRecording
 
@@ -147,7 +152,7 @@ struct Mission::Impl {
   void updateTopology();
   void sweepLidars();
   void capture(size_t unit);
-  void decide(size_t unit);
+  void decideAll();  // every live unit whose decision is due at this tick
   void applyCommand(size_t unit, const agent::AgentCommand& command);
   void applyDueCommands(size_t unit);
   bool commandDue() const;

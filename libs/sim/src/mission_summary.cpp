@@ -64,6 +64,7 @@ MissionSummary Mission::summary() const {
   out.stages = impl.stages;
   out.runMode = toString(impl.config.runMode);
   out.requestedRealtimeFactor = impl.config.realtimeFactor;
+  out.threads = impl.workers ? impl.workers->threads() : 1;
   out.decisionTimes = impl.decisionTimes;
   if (impl.features)
     out.features = impl.features->summary(impl.now(), impl.started ? impl.startTime : impl.now());
@@ -144,7 +145,7 @@ std::string formatSummary(const MissionSummary& s) {
   else
     add("clock       never started (no take-off)\n");
   add("sim time    %.2f s\n", s.simTime);
-  add("wall time   %.2f s\n", s.wallTime);
+  add("wall time   %.2f s on %zu thread%s\n", s.wallTime, s.threads, s.threads == 1 ? "" : "s");
   add("real-time factor %.1fx\n", s.realTimeFactor());
   const auto& t = s.stages;
   add("stages      physics %.2f s, lidar %.2f s, topology %.2f s, scoring %.2f s, strategies "

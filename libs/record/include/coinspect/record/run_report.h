@@ -30,6 +30,7 @@ struct RunReportTiming {
   double wallTime = 0.0;  // s
   double realTimeFactor = 0.0;
   std::map<std::string, double> stages;  // s per stage of the loop
+  size_t threads = 1;                    // threads the decisions and LiDAR sweeps ran on
   // Wall time of the strategies' decide() calls (in latency mode, the commands' delays).
   uint64_t decisions = 0;
   double decisionTimeMean = 0.0;  // s

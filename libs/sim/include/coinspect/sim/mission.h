@@ -52,6 +52,16 @@ class Mission {
   // digests mean equal trajectories, bit for bit.
   uint64_t stateDigest() const;
 
+  // How many threads run the units' decisions and the LiDAR sweeps of a tick (0: one per
+  // hardware thread; the default is 1, all on the caller's thread). Results do not depend on it,
+  // bit for bit: a unit still sees the commands of the units before it in the fleet at the same
+  // tick (they can only reach it as messages over a link, so it waits only for the units it is
+  // linked with), and commands are applied in fleet order. Strategies of different units decide
+  // at once, so one must not share mutable state with another unit's. Call it before the first
+  // step.
+  void setThreads(size_t threads);
+  size_t threads() const;
+
   // Per-unit access for tests and tools (index in the fleet; throws InputError for a bad name).
   size_t unitIndex(const std::string& name) const;
   vehicle::VehicleState unitState(size_t unit) const;

@@ -112,6 +112,7 @@ struct MissionSummary {
   std::string runMode = "lockstep";      // lockstep, latency or realtime
   double requestedRealtimeFactor = 1.0;  // realtime: the pace asked for
   DecisionTimes decisionTimes;
+  size_t threads = 1;  // threads the decisions and sweeps ran on (changes wall times, not results)
   FeatureSummary features;
 };
 
