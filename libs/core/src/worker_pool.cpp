@@ -1,7 +1,6 @@
 #include "coinspect/core/worker_pool.h"
 
 #include <algorithm>
-#include <exception>
 
 #include "coinspect/core/error.h"
 

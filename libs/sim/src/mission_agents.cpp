@@ -81,6 +81,7 @@ void Mission::Impl::decideAll() {
   for (size_t i = 0; i < units.size(); ++i)
     if (units[i].alive() && tick % units[i].decisionPeriod == 0) deciding.push_back(i);
   const size_t n = deciding.size();
+  if (n == 0) return;  // most ticks: the loop runs at 400 Hz, strategies decide far less often
   std::vector<agent::AgentView> views(n);
   std::vector<agent::AgentCommand> commands(n);
   std::vector<double> computeTimes(n);
