@@ -38,6 +38,15 @@ inline uint64_t mortonOf(const octomap::OcTreeKey& key) {
   return spreadBits16(key[0]) | (spreadBits16(key[1]) << 1) | (spreadBits16(key[2]) << 2);
 }
 
+// The Morton code of the cell one step (`step` +1 or -1) along `axis` (0 x, 1 y, 2 z): the
+// component's bits are counted up or down in place (the carry or borrow passes through the other
+// components' bits), wrapping at 2^16 like an OcTreeKey component.
+inline uint64_t stepMorton(uint64_t morton, int axis, int step) {
+  const uint64_t bits = 0x249249249249ULL << axis;
+  const uint64_t moved = step > 0 ? ((morton | ~bits) + 1) & bits : ((morton & bits) - 1) & bits;
+  return (morton & ~bits) | moved;
+}
+
 inline uint64_t updateCode(const octomap::OcTreeKey& key, bool occupied) {
   return (mortonOf(key) << 1) | (occupied ? 1U : 0U);
 }

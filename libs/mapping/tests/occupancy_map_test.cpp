@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <random>
+#include <set>
 #include <tuple>
 
 namespace coinspect::mapping {
@@ -112,6 +114,73 @@ TEST(OccupancyMap, EachCellIsUpdatedOncePerScanWhateverThePointOrder) {
   const float hit = a.octree().getProbHitLog(), miss = a.octree().getProbMissLog();
   for (const auto& [key, logOdds] : leaves(a))
     EXPECT_TRUE(logOdds == hit || logOdds == miss) << logOdds;
+}
+
+// The same scans applied to a plain OcTree with OctoMap's own ray walk (computeRayKeys from the
+// sensor to the centre of each distinct end cell, ends capped at the range as insertScan does,
+// occupied winning, one update per cell) give the same leaves, log-odds for log-odds. The scans
+// are made for the walk's ties: sensors on cell corners and centres, points on a lattice of
+// quarter cells (rays along the axes, along exact diagonals, through edges and corners), random
+// points beyond the cap and inside the sensor's own cell.
+TEST(OccupancyMap, InsertScanWalksTheCellsOctoMapsRayWalkDoes) {
+  const double resolution = 0.5, maxRange = 12.0;
+  OccupancyMap map({resolution, maxRange});
+  octomap::OcTree reference(resolution);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const std::vector<Vec3> sensors = {Vec3(0, 0, 0),         Vec3(0.25, 0.25, 0.25),
+                                     Vec3(0.5, -1.0, 2.0),  Vec3(-3.75, 2.25, -0.5),
+                                     Vec3(1.1, -0.3, 0.77), Vec3(-0.01, 3.4999, 1.5001)};
+  for (const Vec3& sensor : sensors) {
+    Points scan;
+    for (double x = -4.0; x <= 4.0; x += 0.25)
+      for (double y = -4.0; y <= 4.0; y += 0.25)
+        for (const double z : {-2.0, -0.25, 0.0, 0.5, 1.75})
+          scan.emplace_back(static_cast<float>(sensor.x() + x), static_cast<float>(sensor.y() + y),
+                            static_cast<float>(sensor.z() + z));
+    for (int i = 0; i < 4000; ++i) {
+      const double reach = i % 10 == 0 ? 0.2 : 18.0;  // some in the sensor's cell, some capped
+      scan.emplace_back(
+          (sensor + reach * Vec3(unit(random), unit(random), unit(random))).cast<float>());
+    }
+    map.insertScan(sensor, scan);
+
+    octomap::KeySet free, occupied;
+    std::set<octomap::OcTreeKey, bool (*)(const octomap::OcTreeKey&, const octomap::OcTreeKey&)>
+        ends([](const octomap::OcTreeKey& a, const octomap::OcTreeKey& b) {
+          return std::tie(a[0], a[1], a[2]) < std::tie(b[0], b[1], b[2]);
+        });
+    for (const auto& point : scan) {
+      const Vec3 offset = point.cast<double>() - sensor;
+      const bool capped = offset.norm() > maxRange;
+      const Vec3 end =
+          capped ? Vec3(sensor + offset * (maxRange / offset.norm())) : Vec3(point.cast<double>());
+      octomap::OcTreeKey key;
+      ASSERT_TRUE(reference.coordToKeyChecked(end.x(), end.y(), end.z(), key));
+      ends.insert(key);
+      if (!capped) occupied.insert(key);
+    }
+    octomap::KeyRay ray;
+    const octomap::point3d origin(static_cast<float>(sensor.x()), static_cast<float>(sensor.y()),
+                                  static_cast<float>(sensor.z()));
+    for (const auto& key : ends) {
+      ASSERT_TRUE(reference.computeRayKeys(origin, reference.keyToCoord(key), ray));
+      for (const auto& cell : ray)
+        if (!occupied.count(cell)) free.insert(cell);
+    }
+    for (const auto& key : free)
+      reference.updateNode(key, false);
+    for (const auto& key : occupied)
+      reference.updateNode(key, true);
+  }
+  reference.expand();  // OctoMap prunes equal siblings; the map never does
+  std::map<std::tuple<int, int, int>, float> expected;
+  for (auto it = reference.begin_leafs(), end = reference.end_leafs(); it != end; ++it)
+    expected[{it.getKey()[0], it.getKey()[1], it.getKey()[2]}] = it->getLogOdds();
+  const auto actual = leaves(map);
+  EXPECT_GT(actual.size(), 10000U);
+  EXPECT_EQ(actual.size(), expected.size());
+  EXPECT_TRUE(actual == expected);
 }
 
 // A thin plate seen once, then passed at a grazing angle by rays hitting a wall behind it:
