@@ -144,6 +144,58 @@ BENCHMARK(BM_ThetaStar)
     ->ArgNames({"query", "weight_x10"})
     ->Unit(benchmark::kMillisecond);
 
+// A goal walled off in a pocket (a hollow 9-cell cube of occupied cells at mid height between
+// the towers; its free middle keeps the clearance), searched from each query's start with the
+// strategies' budget (150 k expansions) and Theta* w = 1.5, as runtime::Flight plans: with
+// partial paths (`partial_path` 1) the search spends the whole budget before it gives up;
+// without (0) two floods prove the goal unreachable. Rows with `pocket` 0 are the queries' own
+// reachable goals, without partial paths: what the goal-side flood adds to a found path.
+const mapping::VoxelGrid& pocketGrid() {
+  static const mapping::VoxelGrid grid = [] {
+    mapping::VoxelGrid g = mbsGrid();
+    const Index3 low = g.cellOf(Vec3(36.0, -10.0, 25.0));
+    for (int z = 0; z < 9; ++z)
+      for (int y = 0; y < 9; ++y)
+        for (int x = 0; x < 9; ++x) {
+          const bool wall = x == 0 || y == 0 || z == 0 || x == 8 || y == 8 || z == 8;
+          g.set(low + Index3(x, y, z),
+                wall ? mapping::CellState::Occupied : mapping::CellState::Free);
+        }
+    g.computeClearance(5.0, true);
+    return g;
+  }();
+  return grid;
+}
+
+void BM_ThetaStarUnreachable(benchmark::State& state) {
+  const bool pocket = state.range(1) != 0;
+  const mapping::VoxelGrid& grid = pocket ? pocketGrid() : mbsGrid();
+  const Query& query = kQueries[state.range(0)];
+  const Vec3 goal = pocket ? grid.centre(grid.cellOf(Vec3(40.0, -6.0, 29.0))) : query.goal;
+  auto options = searchOptions();
+  options.heuristicWeight = 1.5;
+  options.maxExpansions = 150000;
+  options.partialPath = state.range(2) != 0;
+  planning::PathSearcher searcher;
+  planning::PathResult result;
+  for (auto _ : state) {
+    result = searcher.thetaStar(grid, query.start, goal, options);
+    benchmark::DoNotOptimize(result.expansions);
+  }
+  const auto expected =
+      pocket ? planning::PathStatus::BudgetExhausted : planning::PathStatus::Found;
+  if (result.status != expected) state.SkipWithError(planning::toString(result.status));
+  state.counters["expansions"] = static_cast<double>(result.expansions);
+}
+BENCHMARK(BM_ThetaStarUnreachable)
+    ->Args({0, 1, 1})
+    ->Args({0, 1, 0})
+    ->Args({2, 1, 1})
+    ->Args({2, 1, 0})
+    ->ArgsProduct({{0, 1, 2, 3, 4}, {0}, {0}})
+    ->ArgNames({"query", "pocket", "partial_path"})
+    ->Unit(benchmark::kMillisecond);
+
 void BM_SmoothAndTimeParametrise(benchmark::State& state) {
   const mapping::VoxelGrid& grid = mbsGrid();
   const Query& query = kQueries[state.range(0)];

@@ -319,6 +319,61 @@ TEST(PathSearch, StatusesForBlockedEndpointsAndBudget) {
   }
 }
 
+// Without partial paths a search may prove an enclosed goal unreachable by flooding instead of
+// searching: every query still ends with the status and expansion count of the full search, and
+// found paths are the same. Grids dense enough for many pockets, budgets below and above their
+// components (NoPath and BudgetExhausted), one searcher for both kinds of query in turn.
+TEST(PathSearch, WithoutPartialPathsEveryQueryEndsAsTheFullSearchDoes) {
+  int found = 0, noPath = 0, exhausted = 0;
+  PathSearcher searcher;
+  for (uint64_t seed = 1; seed <= 12; ++seed) {
+    PathSearchOptions full;
+    full.clearance = seed % 3 == 0 ? 0.5 : 0.0;
+    full.unknown = seed % 4 == 1 ? UnknownPolicy::FreeWithCost : UnknownPolicy::Blocked;
+    full.snapRadius = seed % 2 ? 0 : 2;
+    full.heuristicWeight = seed % 5 == 0 ? 1.5 : 1.0;
+    const VoxelGrid grid = randomGrid(seed, 0.4, 0.1, full.unknown == UnknownPolicy::Blocked);
+    Rng rng(seed * 17 + 3);
+    for (int q = 0; q < 40; ++q) {
+      full.maxExpansions = std::vector<size_t>{1, 20, 60, 1000000}[q % 4];
+      PathSearchOptions lean = full;
+      lean.partialPath = false;
+      const auto traversable = [&] {
+        Index3 c;
+        do {
+          c = Index3(rng.below(14), rng.below(11), rng.below(6));
+        } while (!oracleTraversable(grid, c, full));
+        return grid.centre(c);
+      };
+      const Vec3 s = traversable(), g = traversable();
+      for (const bool anyAngle : {false, true}) {
+        const auto run = [&](const PathSearchOptions& o) {
+          return anyAngle ? searcher.thetaStar(grid, s, g, o) : searcher.aStar(grid, s, g, o);
+        };
+        const PathResult a = run(full), b = run(lean);
+        ASSERT_EQ(a.status, b.status) << "seed " << seed << " query " << q;
+        EXPECT_EQ(a.expansions, b.expansions) << "seed " << seed << " query " << q;
+        EXPECT_EQ(a.startSnapped, b.startSnapped);
+        EXPECT_EQ(a.goalSnapped, b.goalSnapped);
+        if (a.status == PathStatus::Found) {
+          ++found;
+          EXPECT_EQ(a.points, b.points);
+          EXPECT_EQ(a.cells, b.cells);
+          EXPECT_EQ(a.cost, b.cost);
+        } else if (a.status == PathStatus::NoPath) {
+          ++noPath;
+        } else if (a.status == PathStatus::BudgetExhausted && b.points.empty()) {
+          ++exhausted;  // the proof's answer, without the partial path
+        }
+      }
+    }
+  }
+  // Each outcome must occur for the comparison to mean anything.
+  EXPECT_GT(found, 200);
+  EXPECT_GT(noPath, 25);
+  EXPECT_GT(exhausted, 15);
+}
+
 // Same query, same answer, also when the searcher is reused across grids and queries.
 TEST(PathSearch, ReusedSearcherGivesIdenticalResults) {
   const VoxelGrid grid = randomGrid(3, 0.15, 0.0, false);

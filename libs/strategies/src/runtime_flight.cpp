@@ -51,6 +51,9 @@ planning::PathSearchOptions Flight::searchOptions(const mapping::VoxelGrid& grid
   // the goal is walled off.
   out.heuristicWeight = 1.5;
   out.maxExpansions = 60000;
+  // plan() needs a failed search's status and expansions only: a goal in a pocket of its own
+  // is then proved unreachable by a small flood, not by spending the whole budget.
+  out.partialPath = false;
   return out;
 }
 

@@ -52,6 +52,11 @@ struct PathSearchOptions {
   size_t maxExpansions = 1000000;
   int snapRadius = 3;  // cells: a blocked start or goal moves to the nearest traversable cell
   std::vector<AvoidSphere> avoid;  // cells whose centre is inside one are not traversable
+  // false: a search that does not reach the goal may leave out the partial path of
+  // BudgetExhausted (points and cells empty; status and expansions are still the search's).
+  // That lets it prove a goal unreachable by flooding the goal's side first, which costs the
+  // goal's enclosed pocket instead of the whole budget spent searching from the start.
+  bool partialPath = true;
 };
 
 enum class PathStatus { Found, NoPath, StartBlocked, GoalBlocked, BudgetExhausted };
@@ -84,6 +89,12 @@ class PathSearcher {
  private:
   struct Query;
   void prepare(const VoxelGrid& grid);
+  // Counts the traversable cells 6-connected to `from` (itself included) in this generation,
+  // stopping after `limit` or at `stopAt`; sets *reached when it got to `stopAt`.
+  size_t flood(const VoxelGrid& grid, const PathSearchOptions& options, const Index3& from,
+               const Index3& stopAt, size_t limit, bool* reached);
+  bool provedUnreachable(const VoxelGrid& grid, const PathSearchOptions& options,
+                         const Index3& startCell, const Index3& goalCell, PathResult* result);
   PathResult search(const VoxelGrid& grid, const Vec3& start, const Vec3& goal,
                     const PathSearchOptions& options, bool anyAngle);
 
@@ -93,6 +104,7 @@ class PathSearcher {
   std::vector<uint8_t> flags_;
   std::vector<uint32_t> weightStamp_;  // == generation_: weight_ holds the cell's multiplier
   std::vector<double> weight_;         // (0: not traversable) under this query's options
+  std::vector<Index3> queue_;          // flood()'s
   uint32_t generation_ = 0;
 };
 
