@@ -79,9 +79,20 @@ class GridFiller {
         stopDepth_(stopDepth) {
     partMin_ = whole.origin + from_.cast<double>() * whole.resolution;
     partMax_ = whole.origin + (to_ + Index3::Ones()).cast<double>() * whole.resolution;
+    tabulateStopNodes();
   }
 
   void visit(const octomap::OcTreeNode* node, int depth, const Key3& corner) {
+    if (depth == stopDepth_ && tabulated_ && (corner >= keyLow_).all() &&
+        (corner <= keyHigh_).all()) {
+      // What the general path below computes for this node, looked up per axis.
+      const Key3 k = corner - keyLow_;
+      if (!overlaps_[0][k[0]] || !overlaps_[1][k[1]] || !overlaps_[2][k[2]]) return;
+      const CellState state = f_.tree.isNodeOccupied(node) ? CellState::Occupied : CellState::Free;
+      const Index3 cell(cells_[0][k[0]], cells_[1][k[1]], cells_[2][k[2]]);
+      if (inPart(cell)) combine(cell, state);
+      return;
+    }
     const int size = 1 << (f_.depth - depth);
     const Vec3 lo = f_.corner(corner);
     const Vec3 hi = lo + Vec3::Constant(size * f_.resolution);
@@ -112,13 +123,41 @@ class GridFiller {
   }
 
  private:
+  // Most visits end at a node of stopDepth_ no larger than a dense cell (a map cell, when the
+  // resolutions are equal): its overlap with the part and its dense cell depend on each key
+  // component alone (corner, cellOf and the box test work per component), so they are computed
+  // once per key value of the part's range, by the same expressions, instead of per node (with
+  // the sanitizers, where these helpers are calls, the copy was a quarter of a mission's time).
+  void tabulateStopNodes() {
+    const int size = 1 << (f_.depth - stopDepth_);
+    if (size * f_.resolution > whole_.resolution * (1.0 + 1e-9)) return;
+    const Vec3 half = Vec3::Constant(0.5 * size * f_.resolution);
+    for (int a = 0; a < 3; ++a) {
+      // Keys (node corners, multiples of size) of the nodes that may overlap the part, with a
+      // node of margin each side.
+      const int low = static_cast<int>(std::floor(partMin_[a] / f_.resolution)) + f_.keyZero;
+      const int high = static_cast<int>(std::ceil(partMax_[a] / f_.resolution)) + f_.keyZero;
+      keyLow_[a] = std::max(0, (low / size - 1) * size);
+      keyHigh_[a] = std::min((1 << f_.depth) - size, (high / size + 1) * size);
+      overlaps_[a].assign(static_cast<size_t>(keyHigh_[a] - keyLow_[a] + 1), 0);
+      cells_[a].assign(overlaps_[a].size(), 0);
+      for (int key = keyLow_[a]; key <= keyHigh_[a]; ++key) {
+        const Vec3 lo = f_.corner(Key3::Constant(key));
+        const Vec3 hi = lo + Vec3::Constant(size * f_.resolution);
+        overlaps_[a][key - keyLow_[a]] = !(hi[a] <= partMin_[a] || lo[a] >= partMax_[a]);
+        cells_[a][key - keyLow_[a]] = whole_.cellOf(lo + half)[a];
+      }
+    }
+    tabulated_ = true;
+  }
+
   bool inPart(const Index3& cell) const {
     return (cell.array() >= from_.array()).all() && (cell.array() <= to_.array()).all();
   }
-  void combine(const Index3& wholeCell, CellState state) {
-    const Index3 cell = wholeCell - from_;
-    const CellState now = part_.state(cell);
-    if (state == CellState::Occupied || now == CellState::Unknown) part_.set(cell, state);
+  void combine(const Index3& wholeCell, CellState state) {  // wholeCell is in the part
+    const size_t index = part_.linear(wholeCell - from_);
+    if (state == CellState::Occupied || part_.stateAt(index) == CellState::Unknown)
+      part_.setAt(index, state);
   }
 
   const TreeFrame& f_;
@@ -127,6 +166,10 @@ class GridFiller {
   VoxelGrid& part_;
   int stopDepth_;
   Vec3 partMin_, partMax_;
+  bool tabulated_ = false;  // tabulateStopNodes() applies
+  Key3 keyLow_ = Key3::Zero(), keyHigh_ = Key3::Constant(-1);
+  std::array<std::vector<uint8_t>, 3> overlaps_;  // per axis, per key from keyLow_
+  std::array<std::vector<int>, 3> cells_;
 };
 
 // `part` holds the cells from `from` on of a grid of frame `whole` (part.size() of them).

@@ -219,20 +219,24 @@ void RobotMap::rebuild() {
   mapping::Index3 low = size, high = mapping::Index3::Constant(-1);
   if ((from.array() <= to.array()).all()) {
     const mapping::VoxelGrid snapshot = map_.toVoxelGrid(grid_.frame(), from, to);
+    const std::vector<uint8_t>& blockUnknown = *blockUnknown_;
     for (int z = from.z(); z <= to.z(); ++z)
-      for (int y = from.y(); y <= to.y(); ++y)
-        for (int x = from.x(); x <= to.x(); ++x) {
-          const mapping::Index3 cell(x, y, z);
-          mapping::CellState state = snapshot.state(cell - from);
-          if (state == mapping::CellState::Unknown && !(*blockUnknown_)[grid_.linear(cell)])
+      for (int y = from.y(); y <= to.y(); ++y) {
+        size_t index = grid_.linear(mapping::Index3(from.x(), y, z));
+        size_t snapshotIndex = snapshot.linear(mapping::Index3(0, y - from.y(), z - from.z()));
+        for (int x = from.x(); x <= to.x(); ++x, ++index, ++snapshotIndex) {
+          mapping::CellState state = snapshot.stateAt(snapshotIndex);
+          if (state == mapping::CellState::Unknown && !blockUnknown[index])
             state = mapping::CellState::Free;
-          const mapping::CellState before = grid_.state(cell);
+          const mapping::CellState before = grid_.stateAt(index);
           if (state == before) continue;
-          grid_.set(cell, state);
+          grid_.setAt(index, state);
           if (grid_.blocksClearance(state) == grid_.blocksClearance(before)) continue;
+          const mapping::Index3 cell(x, y, z);
           low = low.cwiseMin(cell);
           high = high.cwiseMax(cell);
         }
+      }
   }
   if (grid_.hasClearance())
     grid_.updateClearance(low, high);

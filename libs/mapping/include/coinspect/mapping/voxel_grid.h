@@ -59,6 +59,10 @@ class VoxelGrid {
     return contains(cell) ? states_[linear(cell)] : CellState::Unknown;
   }
   void set(const Index3& cell, CellState state) { states_[linear(cell)] = state; }
+  // By linear index, unchecked: for loops over cells known to be inside (where the check of
+  // state() was, with the sanitizers, a call per cell).
+  CellState stateAt(size_t index) const { return states_[index]; }
+  void setAt(size_t index, CellState state) { states_[index] = state; }
 
   // Recomputes the clearance field (exact Euclidean distance transform, capped at `cap` m).
   // Occupied cells always block; unknown cells block when `unknownBlocks`; outside the grid
