@@ -24,16 +24,7 @@ LidarSimulator::LidarSimulator(const LidarSpec& spec, uint64_t seed) : spec_(spe
 
 double raySphereDistance(const Eigen::Vector3d& origin, const Eigen::Vector3d& unitDirection,
                          const SphereOccluder& sphere) {
-  constexpr double kNone = std::numeric_limits<double>::infinity();
-  const Eigen::Vector3d m = origin - sphere.center;
-  const double c = m.squaredNorm() - sphere.radius * sphere.radius;
-  // An origin inside the sphere (the UAV's own hull, say) sees through it.
-  if (c <= 0.0) return kNone;
-  const double b = m.dot(unitDirection);
-  if (b >= 0.0) return kNone;
-  const double discriminant = b * b - c;
-  if (discriminant < 0.0) return kNone;
-  return -b - std::sqrt(discriminant);
+  return RaysFromOrigin(origin, sphere).distance(unitDirection);
 }
 
 void LidarSimulator::sweep(const world::RayCaster& caster,
@@ -48,10 +39,12 @@ void LidarSimulator::sweep(const world::RayCaster& caster,
     worldDirections_[i] = rotation * directions_[i];
   // Nothing beyond maxRange can be a return, so Embree may stop there.
   caster.closestHits(origins_, worldDirections_, spec_.maxRange, distances_);
-  for (const auto& sphere : occluders)
+  for (const auto& sphere : occluders) {
+    const RaysFromOrigin rays(origin, sphere);
+    if (rays.seesThrough()) continue;  // every ray misses it
     for (size_t i = 0; i < n; ++i)
-      distances_[i] =
-          std::min(distances_[i], raySphereDistance(origin, worldDirections_[i], sphere));
+      distances_[i] = std::min(distances_[i], rays.distance(worldDirections_[i]));
+  }
 
   out.sensorPose = sensorPoseInWorld;
   out.points.clear();

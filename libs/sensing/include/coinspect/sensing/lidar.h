@@ -5,7 +5,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "coinspect/core/random.h"
@@ -57,5 +59,29 @@ class LidarSimulator {
 // (from outside), or +infinity.
 double raySphereDistance(const Eigen::Vector3d& origin, const Eigen::Vector3d& unitDirection,
                          const SphereOccluder& sphere);
+
+// raySphereDistance for many rays from one origin: the sphere's terms computed once (a sweep
+// tests every ray against every other UAV).
+class RaysFromOrigin {
+ public:
+  RaysFromOrigin(const Eigen::Vector3d& origin, const SphereOccluder& sphere)
+      : offset_(origin - sphere.center),
+        c_(offset_.squaredNorm() - sphere.radius * sphere.radius) {}
+  // An origin inside the sphere (the UAV's own hull, say) sees through it: no ray hits it.
+  bool seesThrough() const { return c_ <= 0.0; }
+  double distance(const Eigen::Vector3d& unitDirection) const {
+    constexpr double kNone = std::numeric_limits<double>::infinity();
+    if (seesThrough()) return kNone;
+    const double b = offset_.dot(unitDirection);
+    if (b >= 0.0) return kNone;
+    const double discriminant = b * b - c_;
+    if (discriminant < 0.0) return kNone;
+    return -b - std::sqrt(discriminant);
+  }
+
+ private:
+  Eigen::Vector3d offset_;  // origin - centre
+  double c_;                // |offset|^2 - radius^2
+};
 
 }  // namespace coinspect::sensing
