@@ -210,15 +210,15 @@ bool nearestTraversableCell(const VoxelGrid& grid, const Vec3& point, int radius
 struct PathSearcher::Query {
   const VoxelGrid& grid;
   const PathSearchOptions& options;
-  std::vector<uint32_t>& weightStamp;
-  std::vector<double>& weight;
+  CellArray<uint32_t>& weightStamp;
+  CellArray<double>& weight;
   uint32_t generation;
   int sx, sy, sz;
   std::vector<int32_t> moveOffset;                 // linear offset of each move's target
   std::vector<std::vector<int32_t>> grazedOffset;  // and of its grazed cells
 
-  Query(const VoxelGrid& g, const PathSearchOptions& o, std::vector<uint32_t>& stamps,
-        std::vector<double>& weights, uint32_t gen)
+  Query(const VoxelGrid& g, const PathSearchOptions& o, CellArray<uint32_t>& stamps,
+        CellArray<double>& weights, uint32_t gen)
       : grid(g),
         options(o),
         weightStamp(stamps),
@@ -275,17 +275,18 @@ void PathSearcher::prepare(const VoxelGrid& grid) {
   const size_t n = grid.cellCount();
   COINSPECT_ASSERT(n < static_cast<size_t>(std::numeric_limits<int32_t>::max()));
   if (stamp_.size() != n) {
-    g_.assign(n, kInf);
-    parent_.assign(n, -1);
-    stamp_.assign(n, 0);
-    flags_.assign(n, 0);
-    weightStamp_.assign(n, 0);
-    weight_.assign(n, 0.0);
+    // Only the stamps need their zeros; a cell's other entries are written when it is stamped.
+    stamp_.reset(n);
+    weightStamp_.reset(n);
+    g_.reset(n);
+    parent_.reset(n);
+    flags_.reset(n);
+    weight_.reset(n);
     generation_ = 0;
   }
   if (++generation_ == 0) {  // wrapped: forget every stamp once
-    std::fill(stamp_.begin(), stamp_.end(), 0u);
-    std::fill(weightStamp_.begin(), weightStamp_.end(), 0u);
+    stamp_.zero();
+    weightStamp_.zero();
     generation_ = 1;
   }
 }
