@@ -96,7 +96,6 @@ class CellArray {
     if (size_ > 0) std::memset(data_.get(), 0, size_ * sizeof(T));
   }
   T& operator[](size_t i) { return data_[i]; }
-  const T& operator[](size_t i) const { return data_[i]; }
 
  private:
   struct Free {
