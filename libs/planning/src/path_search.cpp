@@ -69,6 +69,11 @@ const std::vector<Move>& moves() {
   return all;
 }
 
+// The six face neighbours, in the order the floods (reachableCells, PathSearcher::flood) visit
+// them.
+const Index3 kFaces[6] = {Index3(1, 0, 0),  Index3(-1, 0, 0), Index3(0, 1, 0),
+                          Index3(0, -1, 0), Index3(0, 0, 1),  Index3(0, 0, -1)};
+
 // Exact 26-connected distance in free space (cells): the A* heuristic.
 double octile(const Index3& a, const Index3& b) {
   std::array<int, 3> d{std::abs(a.x() - b.x()), std::abs(a.y() - b.y()), std::abs(a.z() - b.z())};
@@ -294,8 +299,6 @@ void PathSearcher::prepare(const VoxelGrid& grid) {
 size_t PathSearcher::flood(const VoxelGrid& grid, const PathSearchOptions& options,
                            const Index3& from, const Index3& stopAt, size_t limit, bool* reached) {
   Query query(grid, options, weightStamp_, weight_, generation_);
-  static const Index3 kFaces[6] = {Index3(1, 0, 0),  Index3(-1, 0, 0), Index3(0, 1, 0),
-                                   Index3(0, -1, 0), Index3(0, 0, 1),  Index3(0, 0, -1)};
   // A flooded cell is stamped as a search touches it (g infinite, no parent, no flags): to a
   // search of the same generation it reads as a cell not reached yet.
   const auto mark = [&](int32_t index) {
@@ -554,8 +557,6 @@ std::vector<uint8_t> reachableCells(const VoxelGrid& grid, const Vec3& start,
   thread_local std::vector<Index3> queue;
   queue.assign(1, first);
   reached[grid.linear(first)] = 1;
-  static const Index3 kFaces[6] = {Index3(1, 0, 0),  Index3(-1, 0, 0), Index3(0, 1, 0),
-                                   Index3(0, -1, 0), Index3(0, 0, 1),  Index3(0, 0, -1)};
   for (size_t head = 0; head < queue.size(); ++head)
     for (const Index3& face : kFaces) {
       const Index3 next = queue[head] + face;
