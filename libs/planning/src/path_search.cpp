@@ -569,4 +569,35 @@ std::vector<uint8_t> reachableCells(const VoxelGrid& grid, const Vec3& start,
   return reached;
 }
 
+bool ReachableCellsCache::sameQuestion(const VoxelGrid& grid, uint64_t gridVersion,
+                                       const PathSearchOptions& options) const {
+  if (grid_ != &grid || gridVersion_ != gridVersion || reached_.size() != grid.cellCount())
+    return false;
+  if (options_.clearance != options.clearance || options_.unknown != options.unknown ||
+      options_.snapRadius != options.snapRadius || options_.avoid.size() != options.avoid.size())
+    return false;
+  for (size_t i = 0; i < options.avoid.size(); ++i)
+    if (options_.avoid[i].centre != options.avoid[i].centre ||
+        options_.avoid[i].radius != options.avoid[i].radius)
+      return false;
+  return true;
+}
+
+const std::vector<uint8_t>& ReachableCellsCache::from(const VoxelGrid& grid, uint64_t gridVersion,
+                                                      const Vec3& start,
+                                                      const PathSearchOptions& options) {
+  Index3 first;
+  // A start with no traversable cell near reaches nothing: flooded anew (all 0), never reused.
+  if (sameQuestion(grid, gridVersion, options) &&
+      nearestTraversableCell(grid, start, options.snapRadius, options, &first) &&
+      reached_[grid.linear(first)])
+    return reached_;
+  reached_ = reachableCells(grid, start, options);
+  ++floods_;
+  grid_ = &grid;
+  gridVersion_ = gridVersion;
+  options_ = options;
+  return reached_;
+}
+
 }  // namespace coinspect::planning

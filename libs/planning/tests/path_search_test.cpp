@@ -208,6 +208,55 @@ TEST(PathSearch, ReachableCellsAreThoseASearchReaches) {
   EXPECT_TRUE(std::all_of(none.begin(), none.end(), [](uint8_t r) { return r == 0; }));
 }
 
+// The cache answers every question as reachableCells does: from starts in one component, in
+// another, with no traversable cell near, under other options and after the grid changed (a new
+// version). It floods again only when the answer could differ.
+TEST(PathSearch, ReachableCellsCacheAnswersAsAFreshFloodDoes) {
+  size_t questions = 0, floods = 0;
+  for (uint64_t seed = 1; seed <= 4; ++seed) {
+    VoxelGrid grid = randomGrid(seed, 0.3, 0.1, true);
+    ReachableCellsCache cache;
+    Rng rng(seed * 17 + 3);
+    uint64_t version = 0;
+    for (int q = 0; q < 60; ++q) {
+      PathSearchOptions o;
+      o.snapRadius = static_cast<int>(rng.below(3));
+      o.clearance = rng.below(4) == 0 ? 0.5 : 0.0;
+      if (rng.below(5) == 0) o.avoid.push_back({grid.centre(Index3(7, 5, 3)), 2.0});
+      if (rng.below(10) == 0) {  // the map changed: a cell flips, the grid gets a new version
+        const Index3 c(rng.below(14), rng.below(11), rng.below(6));
+        grid.set(c, grid.state(c) == CellState::Free ? CellState::Occupied : CellState::Free);
+        grid.computeClearance(2.0, true);
+        ++version;
+      }
+      const Vec3 start = grid.centre(Index3(rng.below(14), rng.below(11), rng.below(6)));
+      ASSERT_EQ(cache.from(grid, version, start, o), reachableCells(grid, start, o))
+          << "seed " << seed << " question " << q;
+      ++questions;
+    }
+    floods += cache.floods();
+  }
+  EXPECT_LT(floods, questions);  // some answers came from the kept flood
+  EXPECT_GT(floods, questions / 10);
+
+  // Two starts in one room share a flood; the other room needs its own; back again, another.
+  VoxelGrid rooms(Vec3::Zero(), 1.0, Index3(9, 4, 4), CellState::Free);
+  for (int z = 0; z < 4; ++z)
+    for (int y = 0; y < 4; ++y)
+      rooms.set(Index3(4, y, z), CellState::Occupied);
+  rooms.computeClearance(2.0, true);
+  ReachableCellsCache cache;
+  PathSearchOptions o;
+  o.snapRadius = 0;
+  const std::vector<Vec3> starts = {
+      {0.5, 0.5, 0.5}, {3.5, 3.5, 3.5}, {6.5, 1.5, 1.5}, {1.5, 2.5, 0.5}};
+  const std::vector<size_t> floodsAfter = {1, 1, 2, 3};
+  for (size_t i = 0; i < starts.size(); ++i) {
+    EXPECT_EQ(cache.from(rooms, 0, starts[i], o), reachableCells(rooms, starts[i], o));
+    EXPECT_EQ(cache.floods(), floodsAfter[i]) << "start " << i;
+  }
+}
+
 VoxelGrid wallGrid() {
   // 20 x 10 x 5 cells of 1 m, a wall at x = 10 with a one-cell unknown window at (10, 5, 2).
   VoxelGrid grid(Vec3::Zero(), 1.0, Index3(20, 10, 5), CellState::Free);

@@ -285,8 +285,8 @@ Slei3dStrategy::Plan Slei3dStrategy::planExploration(const agent::AgentView& vie
     coverage.minHeight = 1.0;
     coverage.groundZ = groundZ_;
     // Only places a search can reach: a goal walled off costs a whole search budget per try.
-    const auto reachable = planning::reachableCells(grid, here, flight_->searchOptions(grid));
-    coverage.reachable = &reachable;
+    coverage.reachable =
+        &reachable_.from(grid, map_->gridVersion(), here, flight_->searchOptions(grid));
     // Patches without a safe viewpoint now may get one as the map grows: they stay open, and
     // the box counts as explored when no open patch and no frontier has a viewpoint.
     std::vector<uint32_t> uncoverable;
@@ -430,8 +430,8 @@ Vec3 Slei3dStrategy::meetingPointNear(const agent::AgentView& view, const Vec3& 
                                       const Vec3& fallback, bool above,
                                       const std::optional<Vec3>& toward) const {
   const auto& grid = map_->grid();
-  const auto reachable =
-      planning::reachableCells(grid, view.odometry.position, flight_->searchOptions(grid));
+  const auto& reachable = reachable_.from(grid, map_->gridVersion(), view.odometry.position,
+                                          flight_->searchOptions(grid));
   Vec3 best = fallback;
   const Vec3 aim = toward.value_or(partner);
   double bestDistance = std::numeric_limits<double>::infinity();

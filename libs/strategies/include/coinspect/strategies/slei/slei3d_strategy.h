@@ -271,6 +271,8 @@ class Slei3dStrategy : public agent::Strategy {
   double groundZ_ = 0.0;
   std::unique_ptr<runtime::RobotMap> map_;
   std::unique_ptr<runtime::Flight> flight_;
+  // One flood of the grid per grid version for every "can it get there" of the explorer.
+  mutable planning::ReachableCellsCache reachable_;
   std::unique_ptr<coinspect_strategy::KeyFrameRelay> relay_;
   // The plan: a station's own part; a UAV's, the parts it has heard of merged (one per station).
   std::optional<FleetPlan> plan_;
