@@ -273,6 +273,7 @@ SleiOptions readOptions(const Config& config, SleiVariant variant) {
   o.teamInterval = number("team_interval", o.teamInterval, 10.0, 3600.0);
   o.plan.evenSplit = config.getBool("slei3d", "even_split", o.plan.evenSplit);
   o.reserveNextBox = config.getBool("slei3d", "reserve_next_box", o.reserveNextBox);
+  o.feasibleMeetings = config.getBool("slei3d", "feasible_meetings", o.feasibleMeetings);
   // explore-then-inspect hands out only once no box is left for an explorer: one that waited
   // for a share of another's box never got to hand out (slei-c scene seed 2, 3000 s: two
   // explorers waited for shares from 752 and 787 s to the end, a third from 1798 s, while the

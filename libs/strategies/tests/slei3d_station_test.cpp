@@ -3,6 +3,7 @@
 // others work), work shared with an explorer left without a box.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -389,6 +390,36 @@ TEST(Slei3dStation, WithNoBoxFreeTheBoxOfOneAtWorkIsSplitForOneWithout) {
   }
 }
 
+// `feasible_meetings`: e1 (box A, by the station) is due at A's corner at 160 s; e2 then reports
+// from D, 120 m off, and eq. 9 would have it met at 161 s, which the station at 1 m/s can keep
+// only by leaving e1 waiting. With the option e2's meeting is put where the station's route gets
+// there after e1's (about 170 s + 112 m), and e1's stays as it was.
+TEST(Slei3dStation, WithFeasibleMeetingsTheStationPromisesOnlyWhatItsRouteKeeps) {
+  for (const bool feasible : {false, true}) {
+    auto station = plannedStation(feasible ? "[slei3d]\nfeasible_meetings = true\n" : "");
+    const auto toE1 = replyTo(*station, "e1", 60.0, reportOf(0, false, 1));
+    ASSERT_TRUE(toE1);
+    EXPECT_DOUBLE_EQ(toE1->next.time, 160.0);  // eq. 9's 100 s: the station is free for it
+    const auto toE2 = replyTo(*station, "e2", 61.0, reportOf(3, false, 1));
+    ASSERT_TRUE(toE2);
+    ASSERT_EQ(toE2->box, 3);
+    const double drive = std::hypot(toE2->next.place.x() - toE1->next.place.x(),
+                                    toE2->next.place.y() - toE1->next.place.y());
+    EXPECT_GT(drive, 100.0);
+    if (!feasible) {
+      EXPECT_DOUBLE_EQ(toE2->next.time, 161.0);
+      continue;
+    }
+    // The first 10 s step at or after the arrival that keeps e1 on time.
+    const double arrival = 160.0 + kMeetingService + drive;
+    EXPECT_GE(toE2->next.time + 10.0, arrival);  // within the grace of the arrival
+    EXPECT_LT(toE2->next.time, arrival);
+    // The station's stops sent to e2: e1's meeting first, at its time.
+    ASSERT_EQ(toE2->stops.size(), 2U);
+    EXPECT_DOUBLE_EQ(toE2->stops[0].time, 160.0);
+  }
+}
+
 TEST(Slei3dStation, BadWorkspaceAndSearchKeysAreErrors) {
   agent::StrategyRegistry registry;
   registerSlei3d(registry);
@@ -398,6 +429,7 @@ TEST(Slei3dStation, BadWorkspaceAndSearchKeysAreErrors) {
            {"search_depth = 7", "search_depth"},
            {"search_depth = -1", "search_depth"},
            {"reserve_next_box = 2", "reserve_next_box"},
+           {"feasible_meetings = maybe", "feasible_meetings"},
            {"share_work = often", "share_work"},
            {"frontier_chunk = 0.5", "frontier_chunk"},
            {"frontier_chunk = -1", "frontier_chunk"}}) {

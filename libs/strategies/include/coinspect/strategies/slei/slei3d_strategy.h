@@ -30,6 +30,7 @@
 #include "coinspect/planning/ground_drive.h"
 #include "coinspect/planning/meeting_allocation.h"
 #include "coinspect/planning/meeting_route.h"
+#include "coinspect/planning/slei_meeting_order.h"
 #include "coinspect/strategies/coinspect/keyframe_relay.h"
 #include "coinspect/strategies/runtime/flight.h"
 #include "coinspect/strategies/runtime/robot_map.h"
@@ -123,6 +124,9 @@ struct SleiOptions {
   // new box only at a meeting). A rolling box is reserved only while one stays free for each
   // other explorer at work without a reservation (freeBoxesSpare).
   bool reserveNextBox = true;
+  // `[slei3d] feasible_meetings` (not the paper's): the station promises an explorer's next
+  // meeting no sooner than its route can keep it (feasibleMeetingTime). Off: eq. 9's time.
+  bool feasibleMeetings = false;
   // Work sharing (`[slei3d] share_work`; not the paper's): an explorer left without a box while
   // another still explores waits for a share of it at that one's next station meeting; there
   // the other's reserved box, not yet started, goes back to the free ones, or, none being free,
@@ -195,7 +199,11 @@ class Slei3dStrategy : public agent::Strategy {
   };
   agent::AgentCommand decideStation(const agent::AgentView& view);
   void answerReports(const agent::AgentView& view, agent::AgentCommand& command);
+  planning::MeetingOrderProblem scheduleProblem(const agent::AgentView& view,
+                                                std::optional<uint32_t> without) const;
   void orderSchedule(const agent::AgentView& view);
+  double feasibleMeetingTime(const agent::AgentView& view, uint32_t explorer,
+                             const Meeting& wanted) const;
   // An explorer presumed lost: its box is given to the next subgroup that asks for one, and its
   // inspectors to the next explorer with a box that reports (orphans_).
   void releaseBox(uint32_t explorer);
