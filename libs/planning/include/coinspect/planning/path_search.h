@@ -172,7 +172,7 @@ std::vector<uint8_t> reachableCells(const VoxelGrid& grid, const Vec3& start,
 // snapped cell's component, the same set from any start that snaps into it, so a planner asking
 // from near where it asked before (a meeting point for each of several partners, then its own
 // views) floods the grid once per grid version instead of once per question: on `slei-d`'s
-// 6 M-cell grids the floods were a quarter of a mission's computing. `gridVersion` must change
+// 6 M-cell grids the floods were a quarter of a profile at 650 s. `gridVersion` must change
 // whenever the grid's cells do (runtime::RobotMap::gridVersion).
 class ReachableCellsCache {
  public:
