@@ -9,6 +9,7 @@
 // them for ratios. Queries run on a "full" map: 160 sweeps spread all around the structure at
 // four heights, about what two explorers gather in a mission.
 #include <benchmark/benchmark.h>
+#include <malloc.h>
 #include <octomap/OcTree.h>
 
 #include <cmath>
@@ -292,6 +293,44 @@ void BM_Clearance(benchmark::State& state) {
   }
 }
 
+// Heap held by the full map (glibc's count of bytes in use, chunk headers included), against an
+// octomap::OcTree holding the same cells with the same log-odds, never pruned (as the map's
+// cells were kept before 2026-12-07: one leaf per cell).
+size_t heapInUse() {
+  const struct mallinfo2 info = mallinfo2();
+  return info.uordblks + info.hblkhd;
+}
+
+void BM_MapHeap(benchmark::State& state) {
+  if (!ready(state)) return;
+  const double resolution = resolutionOf(state);
+  size_t ours = 0, tree = 0, cells = 0;
+  for (auto _ : state) {
+    size_t before = heapInUse();
+    auto map = std::make_unique<OccupancyMap>(OccupancyMapOptions{resolution, kMaxRange});
+    for (const auto& sweep : setup().around)
+      map->insertScan(sweep.origin, sweep.points);
+    ours = heapInUse() - before;
+    const auto known = map->knownCells();
+    cells = known.size();
+    auto octree = std::make_unique<octomap::OcTree>(resolution);
+    before = heapInUse();
+    for (const auto& cell : known) {
+      const octomap::OcTreeKey key(static_cast<octomap::key_type>(cell.key[0]),
+                                   static_cast<octomap::key_type>(cell.key[1]),
+                                   static_cast<octomap::key_type>(cell.key[2]));
+      octree->setNodeValue(key, cell.logOdds, true);  // lazy: never pruned
+    }
+    tree = heapInUse() - before;
+    benchmark::DoNotOptimize(octree->size());
+  }
+  state.counters["known_cells"] = static_cast<double>(cells);
+  state.counters["map_MB"] = static_cast<double>(ours) / 1e6;
+  state.counters["octree_MB"] = static_cast<double>(tree) / 1e6;
+  state.counters["map_B_per_cell"] = static_cast<double>(ours) / static_cast<double>(cells);
+  state.counters["octree_B_per_cell"] = static_cast<double>(tree) / static_cast<double>(cells);
+}
+
 BENCHMARK(BM_RayCastSweep)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_InsertSweep)->Arg(500)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_InsertSweepsIntoEmptyMap)->Arg(500)->Arg(1000)->Unit(benchmark::kMillisecond);
@@ -312,6 +351,7 @@ BENCHMARK(BM_ToVoxelGrid)
 BENCHMARK(BM_FrontierClusters)->Arg(500)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SurfaceVoxels)->Arg(500)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Clearance)->Args({500, 3000})->Args({1000, 3000})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MapHeap)->Arg(500)->Arg(1000)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

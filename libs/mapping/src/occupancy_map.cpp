@@ -4,45 +4,42 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
-#include "batch_octree.h"
+#include <octomap/octomap_types.h>
+
+#include "cell_blocks.h"
 #include "coinspect/core/error.h"
 
 namespace coinspect::mapping {
 
 namespace {
 
-inline octomap::point3d toPoint(const Vec3& v) {
-  return octomap::point3d(static_cast<float>(v.x()), static_cast<float>(v.y()),
-                          static_cast<float>(v.z()));
-}
-
-// The double overload: no rounding of the coordinates to float before the cell is chosen.
-inline bool keyOf(const octomap::OcTree& tree, const Vec3& p, octomap::OcTreeKey& key) {
-  return p.allFinite() && tree.coordToKeyChecked(p.x(), p.y(), p.z(), key);
-}
-
 // Calls emit(morton) for each cell OctoMap's computeRayKeys(origin, end) lists, in its order:
 // the cells a ray from `origin` crosses before the cell of `end`, the origin's first; false (and
-// nothing emitted) when either point is outside the tree. The same Amanatides-Woo walk with the
-// same arithmetic (float direction and length, double crossing distances, the same ties and the
-// same stop when rounding overshoots the end cell), so every map stays cell for cell what
+// nothing emitted) when either point is outside the key range. The same Amanatides-Woo walk with
+// the same arithmetic (float direction and length, double crossing distances, the same ties and
+// the same stop when rounding overshoots the end cell), so every map stays cell for cell what
 // computeRayKeys made of it; but it steps Morton codes in place, which the batch update needs,
 // instead of filling a key list that was then converted key by key (OctoMap's walk alone was a
 // tenth of a `slei-c` mission's time).
+inline Vec3 toVec3(const octomap::point3d& p) {
+  return Vec3(p.x(), p.y(), p.z());
+}
+
 template <class Emit>
-bool walkRay(const octomap::OcTree& tree, const octomap::point3d& origin,
-             const octomap::point3d& end, Emit&& emit) {
-  octomap::OcTreeKey fromKey, toKey;
-  if (!tree.coordToKeyChecked(origin, fromKey) || !tree.coordToKeyChecked(end, toKey)) return false;
+bool walkRay(const CellFrame& frame, const octomap::point3d& origin, const octomap::point3d& end,
+             Emit&& emit) {
+  CellKey fromKey, toKey;
+  if (!frame.keyOf(toVec3(origin), fromKey) || !frame.keyOf(toVec3(end), toKey)) return false;
   if (fromKey == toKey) return true;
   uint64_t cell = mortonOf(fromKey);
   const uint64_t last = mortonOf(toKey);
   emit(cell);
-  octomap::point3d direction = end - origin;
+  octomap::point3d direction = end - origin;  // OctoMap's float vector arithmetic, kept
   const float length = static_cast<float>(direction.norm());
   direction /= length;
-  const double resolution = tree.getResolution();
+  const double resolution = frame.resolution;
   int step[3];
   double crossing[3], spacing[3];  // distance along the ray to the next boundary, between them
   for (int i = 0; i < 3; ++i) {
@@ -51,7 +48,7 @@ bool walkRay(const octomap::OcTree& tree, const octomap::point3d& origin,
       crossing[i] = spacing[i] = std::numeric_limits<double>::max();
       continue;
     }
-    double border = tree.keyToCoord(fromKey[i]);
+    double border = frame.centreOf(fromKey[i]);
     border += static_cast<float>(step[i] * resolution * 0.5);
     crossing[i] = (border - origin(i)) / direction(i);
     spacing[i] = resolution / std::fabs(direction(i));
@@ -69,13 +66,11 @@ bool walkRay(const octomap::OcTree& tree, const octomap::point3d& origin,
 
 }  // namespace
 
-OccupancyMap::OccupancyMap(const OccupancyMapOptions& options) : options_(options) {
+OccupancyMap::OccupancyMap(const OccupancyMapOptions& options)
+    : options_(options), cells_(std::make_unique<CellBlocks>(options.resolution)) {
   // Options come from code or from a strategy's validated config: bad values are bugs here.
   COINSPECT_ASSERT(options.resolution > 0.0 && std::isfinite(options.resolution));
   COINSPECT_ASSERT(options.maxRange > 0.0);
-  auto tree = std::make_unique<BatchOcTree>(options.resolution);
-  batch_ = tree.get();
-  tree_ = std::move(tree);
 }
 
 OccupancyMap::~OccupancyMap() = default;
@@ -84,9 +79,11 @@ OccupancyMap& OccupancyMap::operator=(OccupancyMap&&) noexcept = default;
 
 void OccupancyMap::insertScan(const Vec3& origin, const std::vector<Eigen::Vector3f>& worldPoints) {
   ++revision_;
-  const octomap::point3d sensor = toPoint(origin);
-  octomap::OcTreeKey key;
-  COINSPECT_ASSERT(keyOf(*tree_, origin, key));
+  const CellFrame& frame = cells_->frame();
+  const octomap::point3d sensor(static_cast<float>(origin.x()), static_cast<float>(origin.y()),
+                                static_cast<float>(origin.z()));
+  CellKey key;
+  COINSPECT_ASSERT(frame.keyOf(origin, key));
 
   // 1. The end cell of every ray: the return's cell (occupied) or, for a return beyond the range
   // cap, the cell at the cap (free space only). Rays to the same end cell clear the same cells
@@ -100,7 +97,7 @@ void OccupancyMap::insertScan(const Vec3& origin, const std::vector<Eigen::Vecto
     const bool capped = range > options_.maxRange;
     const Vec3 end =
         capped ? Vec3(origin + offset * (options_.maxRange / range)) : p.cast<double>();
-    if (!keyOf(*tree_, end, key)) continue;  // beyond the tree's extent
+    if (!frame.keyOf(end, key)) continue;  // beyond the key range
     ends.push_back(updateCode(key, !capped));
   }
   sortUniqueCodes(ends, sortBuffer_);
@@ -113,7 +110,11 @@ void OccupancyMap::insertScan(const Vec3& origin, const std::vector<Eigen::Vecto
   recent.assign(size_t{1} << kFilterBits, ~uint64_t{0});
   scratch_.clear();
   for (const uint64_t end : ends) {
-    walkRay(*tree_, sensor, tree_->keyToCoord(keyOfCode(end)), [&](uint64_t morton) {
+    const CellKey endKey = keyOfMorton(end >> 1);
+    const octomap::point3d endCentre(static_cast<float>(frame.centreOf(endKey[0])),
+                                     static_cast<float>(frame.centreOf(endKey[1])),
+                                     static_cast<float>(frame.centreOf(endKey[2])));
+    walkRay(frame, sensor, endCentre, [&](uint64_t morton) {
       const uint64_t code = morton << 1;  // free
       uint64_t& slot = recent[(code * 0x9E3779B97F4A7C15ULL) >> (64 - kFilterBits)];
       if (slot == code) return;
@@ -126,62 +127,89 @@ void OccupancyMap::insertScan(const Vec3& origin, const std::vector<Eigen::Vecto
 }
 
 void OccupancyMap::merge(const OccupancyMap& other) {
-  COINSPECT_ASSERT(other.tree_->getResolution() == tree_->getResolution());
+  COINSPECT_ASSERT(other.options_.resolution == options_.resolution);
   ++revision_;
-  std::vector<uint64_t> codes;  // not scratch_: `other` may be this map
-  codes.reserve(other.batch_->knownCells());
-  other.batch_->appendLeafCodes(codes);  // already sorted, one per cell
-  batch_->applySorted(codes, options_.raysClearOccupied, raysClearAt_ ? &raysClearAt_ : nullptr);
+  std::vector<uint64_t> codes, buffer;  // not scratch_: `other` may be this map
+  codes.reserve(other.cells_->knownCells());
+  other.cells_->appendCodes(codes);
+  sortUniqueCodes(codes, buffer);  // one code per cell already: this only sorts
+  cells_->applySorted(codes, options_.raysClearOccupied, raysClearAt_ ? &raysClearAt_ : nullptr);
 }
 
 void OccupancyMap::observeCells(const std::vector<Vec3>& freePoints,
                                 const std::vector<Vec3>& occupiedPoints) {
   ++revision_;
   scratch_.clear();
-  octomap::OcTreeKey key;
+  CellKey key;
   for (const auto& p : freePoints)
-    if (keyOf(*tree_, p, key)) scratch_.push_back(updateCode(key, false));
+    if (cells_->frame().keyOf(p, key)) scratch_.push_back(updateCode(key, false));
   for (const auto& p : occupiedPoints)
-    if (keyOf(*tree_, p, key)) scratch_.push_back(updateCode(key, true));
+    if (cells_->frame().keyOf(p, key)) scratch_.push_back(updateCode(key, true));
   applyScratch(true);
 }
 
 void OccupancyMap::applyScratch(bool missesClearOccupied) {
   sortUniqueCodes(scratch_, sortBuffer_);
-  batch_->applySorted(scratch_, missesClearOccupied, raysClearAt_ ? &raysClearAt_ : nullptr);
+  cells_->applySorted(scratch_, missesClearOccupied, raysClearAt_ ? &raysClearAt_ : nullptr);
 }
 
 CellState OccupancyMap::state(const Vec3& point) const {
-  octomap::OcTreeKey key;
-  if (!keyOf(*tree_, point, key)) return CellState::Unknown;
-  const octomap::OcTreeNode* node = tree_->search(key);
-  if (node == nullptr) return CellState::Unknown;
-  return tree_->isNodeOccupied(node) ? CellState::Occupied : CellState::Free;
+  CellKey key;
+  if (!cells_->frame().keyOf(point, key)) return CellState::Unknown;
+  const float value = cells_->logOdds(key);
+  if (value == CellBlocks::kUnknown) return CellState::Unknown;
+  return cells_->frame().occupied(value) ? CellState::Occupied : CellState::Free;
 }
 
 Vec3 OccupancyMap::cellCentre(const Vec3& point) const {
-  octomap::OcTreeKey key;
-  COINSPECT_ASSERT(keyOf(*tree_, point, key));
-  return Vec3(tree_->keyToCoord(key[0]), tree_->keyToCoord(key[1]), tree_->keyToCoord(key[2]));
+  CellKey key;
+  COINSPECT_ASSERT(cells_->frame().keyOf(point, key));
+  return cells_->frame().centreOf(key);
 }
 
 std::optional<std::pair<Vec3, Vec3>> OccupancyMap::takeChangedCentres() {
-  const BatchOcTree::KeyBox keys = batch_->takeChangedKeys();
+  const CellBlocks::KeyBox keys = cells_->takeChangedKeys();
   if (keys.empty()) return std::nullopt;
   const auto centre = [&](const std::array<int, 3>& k) {
-    return Vec3(tree_->keyToCoord(static_cast<octomap::key_type>(k[0])),
-                tree_->keyToCoord(static_cast<octomap::key_type>(k[1])),
-                tree_->keyToCoord(static_cast<octomap::key_type>(k[2])));
+    return cells_->frame().centreOf(CellKey{
+        static_cast<uint16_t>(k[0]), static_cast<uint16_t>(k[1]), static_cast<uint16_t>(k[2])});
   };
   return std::make_pair(centre(keys.low), centre(keys.high));
 }
 
 size_t OccupancyMap::occupiedCount() const {
-  return batch_->occupiedCells();
+  return cells_->occupiedCells();
 }
 
 size_t OccupancyMap::knownCount() const {
-  return batch_->knownCells();
+  return cells_->knownCells();
+}
+
+float OccupancyMap::hitLogOdds() const {
+  return cells_->frame().hitLog;
+}
+
+float OccupancyMap::missLogOdds() const {
+  return cells_->frame().missLog;
+}
+
+std::vector<OccupancyMap::KnownCell> OccupancyMap::knownCells() const {
+  std::vector<KnownCell> out;
+  out.reserve(cells_->knownCells());
+  for (const auto& block : cells_->blocks())
+    for (unsigned i = 0; i < CellBlocks::kBlockCells; ++i) {
+      const float value = block->logOdds[i];
+      if (value == CellBlocks::kUnknown) continue;
+      const CellKey key = CellBlocks::keyInBlock(*block, i);
+      out.push_back({{key[0], key[1], key[2]},
+                     cells_->frame().centreOf(key),
+                     value,
+                     cells_->frame().occupied(value)});
+    }
+  std::sort(out.begin(), out.end(), [](const KnownCell& a, const KnownCell& b) {
+    return std::tie(a.key[2], a.key[1], a.key[0]) < std::tie(b.key[2], b.key[1], b.key[0]);
+  });
+  return out;
 }
 
 }  // namespace coinspect::mapping

@@ -1,15 +1,13 @@
 // OccupancyMap queries: clearance, dense snapshots, frontier clusters, surface voxels.
 //
-// All of them walk the octree depth first from the root and skip whole subtrees by their key
-// box (outside the region asked for) or by their inner value: the batched update keeps every
-// inner node at the maximum log-odds of its children (batch_octree.h), so a subtree whose root is
-// not occupied holds no occupied cell.
+// The dense snapshots read the blocks that hold the region asked for (src/cell_blocks.h); the
+// clearance skips blocks without an occupied cell or farther than the best distance so far.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
 
-#include "batch_octree.h"
+#include "cell_blocks.h"
 #include "coinspect/core/error.h"
 #include "coinspect/mapping/occupancy_map.h"
 
@@ -17,191 +15,167 @@ namespace coinspect::mapping {
 
 namespace {
 
-using Key3 = Eigen::Array3i;  // key coordinates of a node's minimum corner (0..65535)
+using Key3 = Eigen::Array3i;  // cell keys (0..65535 per axis)
 
-// The keys of a node's child `index` (OctoMap's computeChildIdx: x bit 0, y bit 1, z bit 2).
-inline Key3 childCorner(const Key3& corner, unsigned index, int childSize) {
-  return corner + Key3(index & 1U, (index >> 1) & 1U, (index >> 2) & 1U) * childSize;
-}
-
-struct TreeFrame {
-  const octomap::OcTree& tree;
-  double resolution;
-  int depth;    // tree depth (16)
-  int keyZero;  // key of the cell whose minimum corner is the world origin (32768)
-
-  explicit TreeFrame(const octomap::OcTree& t)
-      : tree(t),
-        resolution(t.getResolution()),
-        depth(static_cast<int>(t.getTreeDepth())),
-        keyZero(static_cast<int>(t.coordToKey(0.0))) {}
-
-  Vec3 corner(const Key3& key) const {
-    return (key - keyZero).cast<double>().matrix() * resolution;
-  }
-};
-
-// Nearest occupied cell centre to q, by branch and bound over the tree.
-void nearestOccupied(const TreeFrame& f, const octomap::OcTreeNode* node, int depth,
-                     const Key3& corner, const Vec3& q, double& best2) {
-  if (!f.tree.isNodeOccupied(node)) return;  // no occupied cell below
-  const int size = 1 << (f.depth - depth);
-  // The cell centres below lie in [lo, hi]: a lower bound of their distance to q.
-  const Vec3 lo = f.corner(corner) + Vec3::Constant(0.5 * f.resolution);
-  const Vec3 hi = lo + Vec3::Constant((size - 1) * f.resolution);
-  const Vec3 gap = (lo - q).cwiseMax(q - hi).cwiseMax(0.0);
-  const double d2 = gap.squaredNorm();
-  if (d2 >= best2) return;
-  if (depth == f.depth) {
-    best2 = d2;
+// Calls visit(block) for every block holding cells of keys [low, high] (and maybe others: when
+// the range spans more blocks than the map has, every block).
+template <class Visit>
+void forEachBlockIn(const CellBlocks& cells, const Key3& low, const Key3& high, Visit&& visit) {
+  if ((low > high).any()) return;
+  const Key3 firstBlock = low / CellBlocks::kBlockSide, lastBlock = high / CellBlocks::kBlockSide;
+  if ((lastBlock - firstBlock + 1).cast<double>().prod() >
+      static_cast<double>(cells.blocks().size())) {
+    for (const auto& block : cells.blocks())
+      visit(*block);
     return;
   }
-  for (unsigned i = 0; i < 8; ++i)
-    if (f.tree.nodeChildExists(node, i))
-      nearestOccupied(f, f.tree.getNodeChild(node, i), depth + 1, childCorner(corner, i, size / 2),
-                      q, best2);
+  for (int z = firstBlock.z(); z <= lastBlock.z(); ++z)
+    for (int y = firstBlock.y(); y <= lastBlock.y(); ++y)
+      for (int x = firstBlock.x(); x <= lastBlock.x(); ++x) {
+        const CellKey first{static_cast<uint16_t>(x * CellBlocks::kBlockSide),
+                            static_cast<uint16_t>(y * CellBlocks::kBlockSide),
+                            static_cast<uint16_t>(z * CellBlocks::kBlockSide)};
+        if (const CellBlocks::Block* block = cells.blockOf(mortonOf(first))) visit(*block);
+      }
 }
 
-// Fills `part`, the cells [from, from + part size) of a grid of frame `whole`, from the tree: a
-// dense cell is Occupied if a map cell inside it is, else Free if one is known. Cells are found
-// in the whole grid's frame, so that a cell reads the same in a part as in the whole grid.
-// `stopDepth` < tree depth when the grid's cells are exactly the nodes of that depth (aligned,
-// resolution x 2^k): then a node's inner value already answers for its cell.
-class GridFiller {
- public:
-  GridFiller(const TreeFrame& frame, const GridFrame& whole, const Index3& from, VoxelGrid& part,
-             int stopDepth)
-      : f_(frame),
-        whole_(whole),
-        from_(from),
-        to_(from + part.size() - Index3::Ones()),
-        part_(part),
-        stopDepth_(stopDepth) {
-    partMin_ = whole.origin + from_.cast<double>() * whole.resolution;
-    partMax_ = whole.origin + (to_ + Index3::Ones()).cast<double>() * whole.resolution;
-    tabulateStopNodes();
-  }
-
-  void visit(const octomap::OcTreeNode* node, int depth, const Key3& corner) {
-    if (depth == stopDepth_ && tabulated_ && (corner >= keyLow_).all() &&
-        (corner <= keyHigh_).all()) {
-      // What the general path below computes for this node, looked up per axis.
-      const Key3 k = corner - keyLow_;
-      if (!overlaps_[0][k[0]] || !overlaps_[1][k[1]] || !overlaps_[2][k[2]]) return;
-      const CellState state = f_.tree.isNodeOccupied(node) ? CellState::Occupied : CellState::Free;
-      const Index3 cell(cells_[0][k[0]], cells_[1][k[1]], cells_[2][k[2]]);
-      if (inPart(cell)) combine(cell, state);
-      return;
+// Calls visit(key, logOdds) for every known cell of keys [low, high].
+template <class Visit>
+void forEachKnownCellIn(const CellBlocks& cells, const Key3& low, const Key3& high, Visit&& visit) {
+  forEachBlockIn(cells, low, high, [&](const CellBlocks::Block& block) {
+    if (block.known == 0) return;
+    const Key3 first(block.low[0], block.low[1], block.low[2]);
+    const bool whole = (first >= low).all() && (first + (CellBlocks::kBlockSide - 1) <= high).all();
+    for (unsigned i = 0; i < CellBlocks::kBlockCells; ++i) {
+      const float value = block.logOdds[i];
+      if (value == CellBlocks::kUnknown) continue;
+      const auto& offset = CellBlocks::cellOffset(i);
+      const Key3 k = first + Key3(offset[0], offset[1], offset[2]);
+      if (whole || ((k >= low).all() && (k <= high).all())) visit(k, value);
     }
-    const int size = 1 << (f_.depth - depth);
-    const Vec3 lo = f_.corner(corner);
-    const Vec3 hi = lo + Vec3::Constant(size * f_.resolution);
-    if ((hi.array() <= partMin_.array()).any() || (lo.array() >= partMax_.array()).any()) return;
-    if (depth == stopDepth_ || !f_.tree.nodeHasChildren(node)) {
-      const CellState state = f_.tree.isNodeOccupied(node) ? CellState::Occupied : CellState::Free;
-      if (size * f_.resolution <= whole_.resolution * (1.0 + 1e-9)) {
-        const Index3 cell = whole_.cellOf(lo + Vec3::Constant(0.5 * size * f_.resolution));
-        if (inPart(cell)) combine(cell, state);
-        return;
-      }
-      // A node larger than a dense cell: every dense cell whose centre it holds.
-      const Index3 first = whole_.cellOf(lo).cwiseMax(from_);
-      const Index3 last = whole_.cellOf(hi).cwiseMin(to_);
+  });
+}
+
+// The key range (clamped to the keys) of the cells whose box reaches into [min, max] widened by
+// `margin` cells each side.
+void keyRange(const CellFrame& f, const Vec3& min, const Vec3& max, int margin, Key3& low,
+              Key3& high) {
+  for (int a = 0; a < 3; ++a) {
+    const double lo = std::floor(min[a] * f.factor) + CellFrame::kKeyZero - margin;
+    const double hi = std::floor(max[a] * f.factor) + CellFrame::kKeyZero + margin;
+    low[a] = static_cast<int>(std::clamp(lo, 0.0, 65535.0));
+    high[a] = static_cast<int>(std::clamp(hi, 0.0, 65535.0));
+  }
+}
+
+// The minimum corner of a cell: (key - 32768) x resolution, per axis.
+inline double cornerOf(const CellFrame& f, int key) {
+  return static_cast<double>(key - CellFrame::kKeyZero) * f.resolution;
+}
+
+// Fills `part`, the cells [from, from + part size) of a grid of frame `whole`: a dense cell is
+// Occupied if a map cell inside it is, else Free if one is known. A map cell no larger than a
+// dense cell is placed by its centre, a larger one fills the dense cells whose centres it holds.
+// Cells are found in the whole grid's frame, so that a cell reads the same in a part as in the
+// whole grid. A map cell's dense cell depends on each key component alone, so it is tabulated
+// per key value of the range (as many entries as the part is cells long) instead of computed
+// per cell.
+void fillGrid(const CellBlocks& cells, const GridFrame& whole, const Index3& from,
+              VoxelGrid& part) {
+  const CellFrame& f = cells.frame();
+  const Index3 to = from + part.size() - Index3::Ones();
+  const Vec3 partMin = whole.origin + from.cast<double>() * whole.resolution;
+  const Vec3 partMax = whole.origin + (to + Index3::Ones()).cast<double>() * whole.resolution;
+  const auto combine = [&](const Index3& wholeCell, CellState state) {
+    const size_t index = part.linear(wholeCell - from);
+    if (state == CellState::Occupied || part.stateAt(index) == CellState::Unknown)
+      part.setAt(index, state);
+  };
+  Key3 low, high;
+  keyRange(f, partMin, partMax, 1, low, high);
+  if (f.resolution > whole.resolution * (1.0 + 1e-9)) {
+    // Map cells larger than dense cells: every dense cell whose centre the map cell holds.
+    forEachKnownCellIn(cells, low, high, [&](const Key3& k, float value) {
+      const CellState state = f.occupied(value) ? CellState::Occupied : CellState::Free;
+      const Vec3 lo(cornerOf(f, k[0]), cornerOf(f, k[1]), cornerOf(f, k[2]));
+      const Vec3 hi = lo + Vec3::Constant(f.resolution);
+      const Index3 first = whole.cellOf(lo).cwiseMax(from);
+      const Index3 last = whole.cellOf(hi).cwiseMin(to);
       for (int z = first.z(); z <= last.z(); ++z)
         for (int y = first.y(); y <= last.y(); ++y)
           for (int x = first.x(); x <= last.x(); ++x) {
             const Index3 cell(x, y, z);
-            const Vec3 c = whole_.centre(cell);
+            const Vec3 c = whole.centre(cell);
             if ((c.array() >= lo.array()).all() && (c.array() < hi.array()).all())
               combine(cell, state);
           }
-      return;
-    }
-    for (unsigned i = 0; i < 8; ++i)
-      if (f_.tree.nodeChildExists(node, i))
-        visit(f_.tree.getNodeChild(node, i), depth + 1, childCorner(corner, i, size / 2));
+    });
+    return;
   }
-
- private:
-  // Most visits end at a node of stopDepth_ no larger than a dense cell (a map cell, when the
-  // resolutions are equal): its overlap with the part and its dense cell depend on each key
-  // component alone (corner, cellOf and the box test work per component), so they are computed
-  // once per key value of the part's range, by the same expressions, instead of per node (with
-  // the sanitizers, where these helpers are calls, the copy was a quarter of a mission's time).
-  void tabulateStopNodes() {
-    const int size = 1 << (f_.depth - stopDepth_);
-    if (size * f_.resolution > whole_.resolution * (1.0 + 1e-9)) return;
-    const Vec3 half = Vec3::Constant(0.5 * size * f_.resolution);
-    for (int a = 0; a < 3; ++a) {
-      // Keys (node corners, multiples of size) of the nodes that may overlap the part, with a
-      // node of margin each side.
-      const int low = static_cast<int>(std::floor(partMin_[a] / f_.resolution)) + f_.keyZero;
-      const int high = static_cast<int>(std::ceil(partMax_[a] / f_.resolution)) + f_.keyZero;
-      keyLow_[a] = std::max(0, (low / size - 1) * size);
-      keyHigh_[a] = std::min((1 << f_.depth) - size, (high / size + 1) * size);
-      overlaps_[a].assign(static_cast<size_t>(keyHigh_[a] - keyLow_[a] + 1), 0);
-      cells_[a].assign(overlaps_[a].size(), 0);
-      for (int key = keyLow_[a]; key <= keyHigh_[a]; ++key) {
-        const Vec3 lo = f_.corner(Key3::Constant(key));
-        const Vec3 hi = lo + Vec3::Constant(size * f_.resolution);
-        overlaps_[a][key - keyLow_[a]] = !(hi[a] <= partMin_[a] || lo[a] >= partMax_[a]);
-        cells_[a][key - keyLow_[a]] = whole_.cellOf(lo + half)[a];
-      }
-    }
-    tabulated_ = true;
-  }
-
-  bool inPart(const Index3& cell) const {
-    return (cell.array() >= from_.array()).all() && (cell.array() <= to_.array()).all();
-  }
-  void combine(const Index3& wholeCell, CellState state) {  // wholeCell is in the part
-    const size_t index = part_.linear(wholeCell - from_);
-    if (state == CellState::Occupied || part_.stateAt(index) == CellState::Unknown)
-      part_.setAt(index, state);
-  }
-
-  const TreeFrame& f_;
-  const GridFrame& whole_;
-  Index3 from_, to_;
-  VoxelGrid& part_;
-  int stopDepth_;
-  Vec3 partMin_, partMax_;
-  bool tabulated_ = false;  // tabulateStopNodes() applies
-  Key3 keyLow_ = Key3::Zero(), keyHigh_ = Key3::Constant(-1);
-  std::array<std::vector<uint8_t>, 3> overlaps_;  // per axis, per key from keyLow_
-  std::array<std::vector<int>, 3> cells_;
-};
-
-// `part` holds the cells from `from` on of a grid of frame `whole` (part.size() of them).
-void fillGrid(const octomap::OcTree& tree, const GridFrame& whole, const Index3& from,
-              VoxelGrid& part) {
-  const TreeFrame frame(tree);
-  // Aligned grids of resolution x 2^k stop k levels above the leaves.
-  int stopDepth = frame.depth;
-  const double ratio = whole.resolution / frame.resolution;
+  // A grid of the map's resolution x 2, 4 or 8 whose cells are aligned with the map's: each of its
+  // cells holds 8^k map cells that are consecutive in their block (the low 3k bits of their
+  // in-block Morton code), so the block is read group by group, one dense cell per group.
+  const double ratio = whole.resolution / f.resolution;
   const int k = static_cast<int>(std::lround(std::log2(ratio)));
-  if (k > 0 && k < frame.depth && std::abs(ratio - std::ldexp(1.0, k)) < 1e-9 * ratio) {
-    const Vec3 steps = whole.origin / whole.resolution;
-    if (((steps.array() - steps.array().round()).abs() < 1e-6).all()) stopDepth = frame.depth - k;
+  const Vec3 steps = whole.origin / whole.resolution;
+  if (k >= 1 && k <= CellBlocks::kBlockBits &&
+      std::abs(ratio - std::ldexp(1.0, k)) < 1e-9 * ratio &&
+      ((steps.array() - steps.array().round()).abs() < 1e-6).all()) {
+    const unsigned group = 1U << (3 * k);
+    forEachBlockIn(cells, low, high, [&](const CellBlocks::Block& block) {
+      if (block.known == 0) return;
+      for (unsigned first = 0; first < CellBlocks::kBlockCells; first += group) {
+        bool known = false, occupied = false;
+        for (unsigned i = first; i < first + group; ++i) {
+          const float value = block.logOdds[i];
+          if (value == CellBlocks::kUnknown) continue;
+          known = true;
+          if (f.occupied(value)) {
+            occupied = true;
+            break;
+          }
+        }
+        if (!known) continue;
+        const CellKey key = CellBlocks::keyInBlock(block, first);
+        const Index3 cell =
+            whole.cellOf(Vec3(cornerOf(f, key[0]), cornerOf(f, key[1]), cornerOf(f, key[2])) +
+                         Vec3::Constant(0.5 * f.resolution));
+        if ((cell.array() < from.array()).any() || (cell.array() > to.array()).any()) continue;
+        combine(cell, occupied ? CellState::Occupied : CellState::Free);
+      }
+    });
+    return;
   }
-  if (tree.getRoot() == nullptr) return;
-  GridFiller(frame, whole, from, part, stopDepth).visit(tree.getRoot(), 0, Key3::Zero());
+  std::array<std::vector<int>, 3> cellOfKey;  // per axis, per key from low: the dense cell
+  for (int a = 0; a < 3; ++a) {
+    cellOfKey[a].resize(static_cast<size_t>(high[a] - low[a] + 1));
+    for (int key = low[a]; key <= high[a]; ++key) {
+      const Vec3 centre = Vec3::Constant(cornerOf(f, key) + 0.5 * f.resolution);
+      cellOfKey[a][key - low[a]] = whole.cellOf(centre)[a];
+    }
+  }
+  forEachKnownCellIn(cells, low, high, [&](const Key3& k, float value) {
+    const Index3 cell(cellOfKey[0][k[0] - low[0]], cellOfKey[1][k[1] - low[1]],
+                      cellOfKey[2][k[2] - low[2]]);
+    if ((cell.array() < from.array()).any() || (cell.array() > to.array()).any()) return;
+    combine(cell, f.occupied(value) ? CellState::Occupied : CellState::Free);
+  });
 }
 
-void fillGrid(const octomap::OcTree& tree, VoxelGrid& grid) {
+void fillGrid(const CellBlocks& cells, VoxelGrid& grid) {
   const GridFrame whole = grid.frame();
-  fillGrid(tree, whole, Index3::Zero(), grid);
+  fillGrid(cells, whole, Index3::Zero(), grid);
 }
 
 // The map cells overlapping [min, max] plus a margin of one cell, as a dense grid at the map's
 // resolution aligned with its cells; region cells are those not on the grid's border.
-VoxelGrid regionGrid(const octomap::OcTree& tree, const Vec3& min, const Vec3& max) {
+VoxelGrid regionGrid(const CellBlocks& cells, const Vec3& min, const Vec3& max) {
   COINSPECT_ASSERT((min.array() <= max.array()).all());
-  const double r = tree.getResolution();
+  const double r = cells.frame().resolution;
   const Index3 first = (min / r).array().floor().cast<int>() - 1;
   const Index3 last = (max / r).array().floor().cast<int>() + 1;
   VoxelGrid grid(first.cast<double>() * r, r, last - first + Index3::Ones());
-  fillGrid(tree, grid);
+  fillGrid(cells, grid);
   return grid;
 }
 
@@ -212,11 +186,33 @@ const std::array<Index3, 6> kFaces = {Index3(-1, 0, 0), Index3(1, 0, 0),  Index3
 }  // namespace
 
 double OccupancyMap::clearance(const Vec3& point, double maxDistance) const {
-  COINSPECT_ASSERT(maxDistance >= 0.0);
-  const octomap::OcTreeNode* root = tree_->getRoot();
-  if (root == nullptr) return maxDistance;
+  COINSPECT_ASSERT(maxDistance >= 0.0 && point.allFinite());
+  const CellFrame& f = cells_->frame();
   double best2 = maxDistance * maxDistance;
-  nearestOccupied(TreeFrame(*tree_), root, 0, Key3::Zero(), point, best2);
+  // The distance from `point` to the box [lo, hi] of cell centres: a lower bound for them all.
+  const auto gap2 = [&](const Vec3& lo, const Vec3& hi) {
+    const Vec3 gap = (lo - point).cwiseMax(point - hi).cwiseMax(0.0);
+    return gap.squaredNorm();
+  };
+  const auto searchBlock = [&](const CellBlocks::Block& block) {
+    if (block.occupied == 0) return;
+    const Vec3 lo =
+        Vec3(cornerOf(f, block.low[0]), cornerOf(f, block.low[1]), cornerOf(f, block.low[2])) +
+        Vec3::Constant(0.5 * f.resolution);
+    if (gap2(lo, lo + Vec3::Constant((CellBlocks::kBlockSide - 1) * f.resolution)) >= best2) return;
+    for (unsigned i = 0; i < CellBlocks::kBlockCells; ++i) {
+      const float value = block.logOdds[i];
+      if (value == CellBlocks::kUnknown || !f.occupied(value)) continue;
+      const CellKey key = CellBlocks::keyInBlock(block, i);
+      const Vec3 centre = Vec3(cornerOf(f, key[0]), cornerOf(f, key[1]), cornerOf(f, key[2])) +
+                          Vec3::Constant(0.5 * f.resolution);
+      best2 = std::min(best2, gap2(centre, centre));
+    }
+  };
+  Key3 low, high;
+  keyRange(f, point - Vec3::Constant(maxDistance), point + Vec3::Constant(maxDistance), 1, low,
+           high);
+  forEachBlockIn(*cells_, low, high, searchBlock);
   return std::min(std::sqrt(best2), maxDistance);
 }
 
@@ -228,7 +224,7 @@ VoxelGrid OccupancyMap::toVoxelGrid(const Vec3& min, const Vec3& max, double res
                           .cast<int>()
                           .cwiseMax(1);
   VoxelGrid grid(min, resolution, size);
-  fillGrid(*tree_, grid);
+  fillGrid(*cells_, grid);
   return grid;
 }
 
@@ -238,7 +234,7 @@ VoxelGrid OccupancyMap::toVoxelGrid(const GridFrame& whole, const Index3& from,
                    (from.array() <= to.array()).all());
   VoxelGrid part(whole.origin + from.cast<double>() * whole.resolution, whole.resolution,
                  to - from + Index3::Ones());
-  fillGrid(*tree_, whole, from, part);
+  fillGrid(*cells_, whole, from, part);
   return part;
 }
 
@@ -266,7 +262,7 @@ std::vector<FrontierCluster> splitFrontierClusters(const std::vector<FrontierClu
 
 std::vector<FrontierCluster> OccupancyMap::frontierClusters(const Vec3& min, const Vec3& max,
                                                             size_t minClusterSize) const {
-  const VoxelGrid grid = regionGrid(*tree_, min, max);
+  const VoxelGrid grid = regionGrid(*cells_, min, max);
   const Index3 size = grid.size();
   std::vector<uint8_t> mark(grid.cellCount(), 0);  // 1 = frontier, 2 = already clustered
   for (int z = 1; z < size.z() - 1; ++z)
@@ -324,7 +320,7 @@ std::vector<FrontierCluster> OccupancyMap::frontierClusters(const Vec3& min, con
 }
 
 std::vector<SurfaceVoxel> OccupancyMap::surfaceVoxels(const Vec3& min, const Vec3& max) const {
-  const VoxelGrid grid = regionGrid(*tree_, min, max);
+  const VoxelGrid grid = regionGrid(*cells_, min, max);
   const Index3 size = grid.size();
   std::vector<SurfaceVoxel> surface;
   for (int z = 1; z < size.z() - 1; ++z)

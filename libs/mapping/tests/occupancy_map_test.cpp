@@ -48,14 +48,11 @@ OccupancyMap wallAndFloorMap() {
   return map;
 }
 
-// Every leaf as (key, log-odds), in key order: the whole content of a map.
+// Every known cell as (key, log-odds), in key order: the whole content of a map.
 std::map<std::tuple<int, int, int>, float> leaves(const OccupancyMap& map) {
   std::map<std::tuple<int, int, int>, float> out;
-  const auto& tree = map.octree();
-  for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it) {
-    EXPECT_EQ(it.getDepth(), tree.getTreeDepth());  // never pruned
-    out[{it.getKey()[0], it.getKey()[1], it.getKey()[2]}] = it->getLogOdds();
-  }
+  for (const auto& cell : map.knownCells())
+    out[{cell.key[0], cell.key[1], cell.key[2]}] = cell.logOdds;
   return out;
 }
 
@@ -111,7 +108,7 @@ TEST(OccupancyMap, EachCellIsUpdatedOncePerScanWhateverThePointOrder) {
   b.insertScan(origin, scan);
   EXPECT_EQ(leaves(a), leaves(b));
   // One observation per cell: the log-odds of a single hit or miss, never more.
-  const float hit = a.octree().getProbHitLog(), miss = a.octree().getProbMissLog();
+  const float hit = a.hitLogOdds(), miss = a.missLogOdds();
   for (const auto& [key, logOdds] : leaves(a))
     EXPECT_TRUE(logOdds == hit || logOdds == miss) << logOdds;
 }
@@ -281,7 +278,7 @@ TEST(OccupancyMap, MergingAMapIntoItselfRepeatsEveryObservation) {
   map.merge(map);
   const auto after = leaves(map);
   ASSERT_EQ(after.size(), before.size());
-  const float hit = map.octree().getProbHitLog(), miss = map.octree().getProbMissLog();
+  const float hit = map.hitLogOdds(), miss = map.missLogOdds();
   for (const auto& [key, logOdds] : before)
     EXPECT_FLOAT_EQ(after.at(key), logOdds + (logOdds >= 0.0f ? hit : miss));
   EXPECT_EQ(map.knownCount(), known);
@@ -290,7 +287,7 @@ TEST(OccupancyMap, MergingAMapIntoItselfRepeatsEveryObservation) {
 
 TEST(OccupancyMapDeathTest, MergeRequiresTheSameResolution) {
   OccupancyMap fine({0.5, 30.0}), coarse({1.0, 30.0});
-  EXPECT_DEATH(fine.merge(coarse), "getResolution");
+  EXPECT_DEATH(fine.merge(coarse), "resolution");
 }
 
 // Free cells at res 1.0: cube A (3 x 3 x 3 at the origin) with an occupied wall on its -x side,
@@ -409,18 +406,27 @@ TEST(OccupancyMap, VoxelGridAgreesWithStateAndTheLeafRule) {
   map.insertScan(first, scan);
   map.insertScan(second, wallAt(-4.75, second, 2.0, 0.07));
   const Vec3 min(-6.0, -8.0, -2.0), max(10.0, 6.0, 6.0);  // aligned with cells up to 2 m
-  for (const double resolution : {0.5, 1.0, 2.0})
+  for (const double resolution : {0.25, 0.5, 1.0, 2.0})
     for (const Vec3& shift : {Vec3(0, 0, 0), Vec3(0.1, 0.2, 0.3)}) {
       const VoxelGrid grid = map.toVoxelGrid(min + shift, max + shift, resolution);
+      if (resolution < 0.5) {
+        // Dense cells finer than the map's: each reads the map cell holding its centre.
+        for (int z = 0; z < grid.size().z(); ++z)
+          for (int y = 0; y < grid.size().y(); ++y)
+            for (int x = 0; x < grid.size().x(); ++x) {
+              const Index3 cell(x, y, z);
+              ASSERT_EQ(grid.state(cell), map.state(grid.centre(cell)))
+                  << x << " " << y << " " << z;
+            }
+        continue;
+      }
       ASSERT_EQ(grid.size(), (Vec3(16, 14, 8) / resolution).cast<int>());
       // The rule, by brute force over the leaves.
       VoxelGrid expected(grid.origin(), resolution, grid.size());
-      const auto& tree = map.octree();
-      for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it) {
-        const Vec3 c(it.getX(), it.getY(), it.getZ());
-        const Index3 cell = expected.cellOf(c);
+      for (const auto& known : map.knownCells()) {
+        const Index3 cell = expected.cellOf(known.centre);
         if (!expected.contains(cell)) continue;
-        if (tree.isNodeOccupied(*it))
+        if (known.occupied)
           expected.set(cell, CellState::Occupied);
         else if (expected.state(cell) == CellState::Unknown)
           expected.set(cell, CellState::Free);
@@ -445,15 +451,15 @@ TEST(OccupancyMap, VoxelGridAgreesWithStateAndTheLeafRule) {
 TEST(OccupancyMap, ClearanceMatchesBruteForce) {
   const OccupancyMap map = wallAndFloorMap();
   std::vector<Vec3> occupied;
-  const auto& tree = map.octree();
-  for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it)
-    if (tree.isNodeOccupied(*it)) occupied.emplace_back(it.getX(), it.getY(), it.getZ());
+  for (const auto& cell : map.knownCells())
+    if (cell.occupied) occupied.push_back(cell.centre);
   ASSERT_EQ(occupied.size(), map.occupiedCount());
   for (int i = 0; i < 400; ++i) {
     // A deterministic scatter over the scene, some points far from everything.
     const Vec3 q(-4.0 + 0.37 * (i % 37), -5.0 + 0.61 * ((i * 7) % 19),
                  -1.0 + 0.29 * ((i * 3) % 23));
-    for (const double cap : {0.8, 3.0}) {
+    // The last cap reaches every cell of the map (the search walks all its blocks).
+    for (const double cap : {0.8, 3.0, 1e6}) {
       double best = cap;
       for (const auto& c : occupied)
         best = std::min(best, (c - q).norm());
@@ -474,11 +480,9 @@ TEST(OccupancyMap, ChangedCentresBoundTheCellsWhoseStateChanged) {
   const auto first = map.takeChangedCentres();
   ASSERT_TRUE(first);
   Vec3 low = Vec3::Constant(1e9), high = Vec3::Constant(-1e9);
-  const auto& tree = map.octree();
-  for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it) {
-    const Vec3 c(it.getX(), it.getY(), it.getZ());
-    low = low.cwiseMin(c);
-    high = high.cwiseMax(c);
+  for (const auto& cell : map.knownCells()) {
+    low = low.cwiseMin(cell.centre);
+    high = high.cwiseMax(cell.centre);
   }
   EXPECT_LT((first->first - low).norm(), 1e-9);
   EXPECT_LT((first->second - high).norm(), 1e-9);
@@ -514,6 +518,45 @@ TEST(OccupancyMap, PartOfAVoxelGridReadsAsTheSameCells) {
           }
       EXPECT_GT(known, 0U);
     }
+}
+
+// Cells are kept in blocks of 8^3: cells on both sides of block borders, at negative and positive
+// coordinates and at the two ends of the key range (+-2^15 cells around the origin) read back as
+// observed, cells beyond the range are not stored, and the counts and the content agree.
+TEST(OccupancyMap, CellsAcrossBlockBordersAndAtTheEndsOfTheKeyRange) {
+  OccupancyMap map({0.5, 30.0});
+  std::vector<Vec3> freeCells, occupiedCells;
+  for (int i = -9; i <= 9; ++i)  // across the borders at -4 m, 0 and 4 m on each axis
+    for (int j = -9; j <= 9; j += 3) {
+      freeCells.emplace_back(0.5 * i + 0.25, 0.5 * j + 0.25, -0.25);
+      occupiedCells.emplace_back(-0.25, 0.5 * i + 0.25, 0.5 * j + 0.25);
+    }
+  const double edge = 0.5 * 32768;  // the keys reach from -edge to edge
+  occupiedCells.emplace_back(-edge + 0.1, -edge + 0.1, -edge + 0.1);  // key 0
+  occupiedCells.emplace_back(edge - 0.1, edge - 0.1, edge - 0.1);     // key 65535
+  freeCells.emplace_back(edge + 0.1, 0.0, 0.0);                       // beyond: skipped
+  freeCells.emplace_back(0.0, -edge - 0.1, 0.0);
+  map.observeCells(freeCells, occupiedCells);
+  for (const Vec3& p : freeCells)
+    if ((p.array().abs() < edge).all()) {
+      EXPECT_EQ(map.state(p), CellState::Free) << p.transpose();
+    }
+  for (const Vec3& p : occupiedCells)
+    EXPECT_EQ(map.state(p), CellState::Occupied) << p.transpose();
+  EXPECT_EQ(map.state(Vec3(edge + 0.1, 0.0, 0.0)), CellState::Unknown);
+  EXPECT_EQ(map.state(Vec3(0.75, 0.75, 0.75)), CellState::Unknown);
+  EXPECT_EQ(map.occupiedCount(), 19U * 7U + 2U);
+  EXPECT_EQ(map.knownCount(), 2U * 19U * 7U + 2U);
+  const auto cells = map.knownCells();
+  ASSERT_EQ(cells.size(), map.knownCount());
+  EXPECT_EQ(cells.front().key, (std::array<int, 3>{0, 0, 0}));
+  EXPECT_EQ(cells.back().key, (std::array<int, 3>{65535, 65535, 65535}));
+  for (const auto& cell : cells) {
+    EXPECT_EQ(map.state(cell.centre), cell.occupied ? CellState::Occupied : CellState::Free);
+    EXPECT_EQ(cell.logOdds, cell.occupied ? map.hitLogOdds() : map.missLogOdds());
+  }
+  EXPECT_NEAR(map.clearance(Vec3(edge - 2.0, edge - 2.0, edge - 2.0), 10.0), std::sqrt(3.0) * 1.75,
+              1e-9);
 }
 
 TEST(OccupancyMap, CellCentreMatchesTheOctreeCells) {

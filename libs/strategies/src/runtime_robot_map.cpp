@@ -201,7 +201,7 @@ void RobotMap::rebuild() {
   // The cells read again from the map: every cell at the first build and after openColumn (the
   // blocking zone changed), else those holding a map cell whose state changed, plus one cell of
   // margin against rounding (the others would read what they read last time). Copying the whole
-  // octree into the grid at every rebuild was most of a rebuild's cost, page faults included.
+  // map into the grid at every rebuild was most of a rebuild's cost, page faults included.
   const mapping::Index3 size = grid_.size();
   mapping::Index3 from = mapping::Index3::Zero(), to = size - mapping::Index3::Ones();
   if (!readAll_) {

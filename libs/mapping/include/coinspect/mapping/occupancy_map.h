@@ -1,11 +1,14 @@
-// One robot's occupancy memory: an octomap::OcTree fed by its own LiDAR sweeps and by the key
-// frames it received, with the queries planners need. Owned directly (not through MRPT's
-// COctoMap, see the MRPT field notes). Every query is deterministic and independent of the
-// order in which equal information arrived only as far as OctoMap's log-odds clamping allows.
+// One robot's occupancy memory, fed by its own LiDAR sweeps and by the key frames it received,
+// with the queries planners need. Cells, their keys and their log-odds are OctoMap's (an
+// octomap::OcTree fed the same updates holds the same cells: unit tests compare them), stored in
+// blocks of 8^3 cells instead of a tree (src/cell_blocks.h: a sixth of the memory). Every query
+// is deterministic and independent of the order in which equal information arrived only as far
+// as OctoMap's log-odds clamping allows.
 #pragma once
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -15,13 +18,9 @@
 
 #include "coinspect/mapping/voxel_grid.h"
 
-namespace octomap {
-class OcTree;
-}
-
 namespace coinspect::mapping {
 
-class BatchOcTree;  // src/batch_octree.h: the OcTree with the batched update
+class CellBlocks;  // src/cell_blocks.h: the cells
 
 struct OccupancyMapOptions {
   double resolution = 0.5;  // m, leaf size
@@ -66,7 +65,7 @@ class OccupancyMap {
 
   // Inserts one scan (points in the world frame, returns only) taken from `origin`: cells along
   // each ray become more likely free, end cells more likely occupied; each cell is updated once
-  // per scan. Used for own sweeps and for received key frames alike. Points beyond the tree's
+  // per scan. Used for own sweeps and for received key frames alike. Points beyond the key range
   // extent (+-16 km at 0.5 m) are skipped; a non-finite point or origin is a bug (assert).
   void insertScan(const Vec3& origin, const std::vector<Eigen::Vector3f>& worldPoints);
   // Adds every known cell of `other` (same resolution required) as one observation each.
@@ -114,7 +113,18 @@ class OccupancyMap {
   // Bumped by every insertScan/merge: lets callers rebuild derived grids only when needed.
   uint64_t revision() const { return revision_; }
 
-  const octomap::OcTree& octree() const { return *tree_; }
+  // OctoMap's log-odds of one hit and of one miss (its default sensor model).
+  float hitLogOdds() const;
+  float missLogOdds() const;
+  // Every known cell: OctoMap's key of the cell (16 bits per axis, 32768 at the origin), its
+  // centre and log-odds; in ascending key order (z, then y, then x).
+  struct KnownCell {
+    std::array<int, 3> key{};
+    Vec3 centre = Vec3::Zero();
+    float logOdds = 0.0f;
+    bool occupied = false;
+  };
+  std::vector<KnownCell> knownCells() const;
 
  private:
   // Sorts and deduplicates the update codes in scratch_ (occupied wins) and applies them.
@@ -122,10 +132,9 @@ class OccupancyMap {
 
   OccupancyMapOptions options_;
   std::function<bool(const Vec3&)> raysClearAt_;
-  std::unique_ptr<octomap::OcTree> tree_;  // a BatchOcTree (src/batch_octree.h)
-  BatchOcTree* batch_ = nullptr;           // the same object, with the batched update
-  std::vector<uint64_t> scratch_;          // update codes of the current scan (reused)
-  std::vector<uint64_t> sortBuffer_;       // radix sort buffer (reused)
+  std::unique_ptr<CellBlocks> cells_;
+  std::vector<uint64_t> scratch_;     // update codes of the current scan (reused)
+  std::vector<uint64_t> sortBuffer_;  // radix sort buffer (reused)
   uint64_t revision_ = 0;
 };
 

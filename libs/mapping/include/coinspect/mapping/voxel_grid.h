@@ -1,6 +1,7 @@
 // A dense, axis-aligned snapshot of a robot's occupancy over a bounded region, for path search.
-// The octree (OccupancyMap) is the robot's memory; planners query this grid instead because a
-// dense array lookup is ~100x cheaper than an octree descent and A* touches millions of cells.
+// The OccupancyMap is the robot's memory; planners query this grid instead because A* touches
+// millions of cells: a dense array lookup, with the clearance beside it, is far cheaper than a
+// map lookup (a hash of the cell's block) and a distance search.
 // The clearance field holds, per cell, the Euclidean distance (m) from the cell centre to the
 // nearest blocked cell centre (occupied, and unknown when the caller said so), capped.
 #pragma once

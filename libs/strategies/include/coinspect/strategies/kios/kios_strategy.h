@@ -27,7 +27,7 @@
 //   max_waypoints = 150       waypoints per plan (those nearest a vehicle start)
 //   max_speed = 4             m/s (photographers inspect at most at the blur-free speed)
 //   safety_margin = 0.8       m kept between a UAV's sphere and any mapped surface
-//   map_resolution = 1        m, octree leaf of the robot's map (planning grid: 1 m)
+//   map_resolution = 1        m, cell of the robot's map (planning grid: 1 m)
 //   mtsp_seed = 1             seed of the mTSP search, the same in every robot
 //   broadcast_visited = true  send visited waypoint ids to neighbours
 //   return_home = true        return above the start for the last seconds

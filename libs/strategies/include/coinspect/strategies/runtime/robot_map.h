@@ -26,7 +26,7 @@ const char* toString(UnknownSpace policy);
 bool parseUnknownSpace(const std::string& text, UnknownSpace* out);
 
 struct RobotMapOptions {
-  double mapResolution = 0.5;   // m, octree leaf
+  double mapResolution = 0.5;   // m, map cell
   double maxRange = 30.0;       // m, LiDAR returns farther away only clear free space
   double gridResolution = 1.0;  // m, planning grid cell
   double regionMargin = 12.0;   // m around the boxes' bounds (orbits must fit inside)
