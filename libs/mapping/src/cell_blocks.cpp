@@ -91,8 +91,8 @@ void CellBlocks::applySorted(const std::vector<uint64_t>& codes, bool missesClea
   const uint64_t* code = codes.data();
   const uint64_t* const end = code + codes.size();
   while (code != end) {
-    Block& block = blockFor(*code >> kCellShift);
     const uint64_t blockCodes = *code >> kCellShift;
+    Block& block = blockFor(blockCodes);
     for (; code != end && (*code >> kCellShift) == blockCodes; ++code) {
       float& value = block.logOdds[(*code >> 1) & (kBlockCells - 1)];
       const bool justCreated = value == kUnknown;
