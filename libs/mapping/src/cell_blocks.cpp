@@ -78,13 +78,6 @@ float CellBlocks::logOdds(const CellKey& key) const {
   return block == nullptr ? kUnknown : block->logOdds[morton & (kBlockCells - 1)];
 }
 
-// The cell's centre rounded to float, as OctoMap's keyToCoord(OcTreeKey) gives it.
-Vec3 CellBlocks::floatCentre(const CellKey& key) const {
-  return Vec3(static_cast<float>(frame_.centreOf(key[0])),
-              static_cast<float>(frame_.centreOf(key[1])),
-              static_cast<float>(frame_.centreOf(key[2])));
-}
-
 void CellBlocks::applySorted(const std::vector<uint64_t>& codes, bool missesClearOccupied,
                              const std::function<bool(const Vec3&)>* clearAt) {
   constexpr unsigned kCellShift = 1 + 3 * kBlockBits;  // the block's bits in a code
@@ -99,7 +92,8 @@ void CellBlocks::applySorted(const std::vector<uint64_t>& codes, bool missesClea
       const bool wasOccupied = !justCreated && frame_.occupied(value);
       const bool hit = (*code & 1U) != 0;
       if (!hit && wasOccupied && !missesClearOccupied &&
-          !(clearAt != nullptr && (*clearAt)(floatCentre(keyOfMorton(*code >> 1)))))
+          !(clearAt != nullptr &&
+            (*clearAt)(frame_.floatCentreOf(keyOfMorton(*code >> 1)).cast<double>())))
         continue;
       // OctoMap's updateNodeLogOdds on a node created at 0.
       if (justCreated) value = 0.0f;

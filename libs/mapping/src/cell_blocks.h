@@ -99,6 +99,13 @@ struct CellFrame {
   Vec3 centreOf(const CellKey& key) const {
     return Vec3(centreOf(key[0]), centreOf(key[1]), centreOf(key[2]));
   }
+  // The centre rounded to float, as OctoMap's keyToCoord(OcTreeKey) gives it (its ray ends and
+  // the points its rules are asked about).
+  Eigen::Vector3f floatCentreOf(const CellKey& key) const {
+    return Eigen::Vector3f(static_cast<float>(centreOf(key[0])),
+                           static_cast<float>(centreOf(key[1])),
+                           static_cast<float>(centreOf(key[2])));
+  }
   bool occupied(float logOdds) const { return logOdds >= occupiedLog; }
 };
 
@@ -165,7 +172,6 @@ class CellBlocks {
 
  private:
   Block& blockFor(uint64_t blockMorton);  // allocates it when needed
-  Vec3 floatCentre(const CellKey& key) const;
   void noteChanged(uint64_t code);
 
   CellFrame frame_;

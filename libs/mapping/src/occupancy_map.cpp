@@ -15,6 +15,10 @@ namespace coinspect::mapping {
 
 namespace {
 
+inline Vec3 toVec3(const octomap::point3d& p) {
+  return Vec3(p.x(), p.y(), p.z());
+}
+
 // Calls emit(morton) for each cell OctoMap's computeRayKeys(origin, end) lists, in its order:
 // the cells a ray from `origin` crosses before the cell of `end`, the origin's first; false (and
 // nothing emitted) when either point is outside the key range. The same Amanatides-Woo walk with
@@ -23,10 +27,6 @@ namespace {
 // computeRayKeys made of it; but it steps Morton codes in place, which the batch update needs,
 // instead of filling a key list that was then converted key by key (OctoMap's walk alone was a
 // tenth of a `slei-c` mission's time).
-inline Vec3 toVec3(const octomap::point3d& p) {
-  return Vec3(p.x(), p.y(), p.z());
-}
-
 template <class Emit>
 bool walkRay(const CellFrame& frame, const octomap::point3d& origin, const octomap::point3d& end,
              Emit&& emit) {
@@ -110,10 +110,8 @@ void OccupancyMap::insertScan(const Vec3& origin, const std::vector<Eigen::Vecto
   recent.assign(size_t{1} << kFilterBits, ~uint64_t{0});
   scratch_.clear();
   for (const uint64_t end : ends) {
-    const CellKey endKey = keyOfMorton(end >> 1);
-    const octomap::point3d endCentre(static_cast<float>(frame.centreOf(endKey[0])),
-                                     static_cast<float>(frame.centreOf(endKey[1])),
-                                     static_cast<float>(frame.centreOf(endKey[2])));
+    const Eigen::Vector3f c = frame.floatCentreOf(keyOfMorton(end >> 1));
+    const octomap::point3d endCentre(c.x(), c.y(), c.z());
     walkRay(frame, sensor, endCentre, [&](uint64_t morton) {
       const uint64_t code = morton << 1;  // free
       uint64_t& slot = recent[(code * 0x9E3779B97F4A7C15ULL) >> (64 - kFilterBits)];

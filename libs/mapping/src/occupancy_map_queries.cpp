@@ -73,6 +73,14 @@ inline double cornerOf(const CellFrame& f, int key) {
   return static_cast<double>(key - CellFrame::kKeyZero) * f.resolution;
 }
 
+// The centre of a cell as the queries compute it: its corner plus half a cell (not
+// CellFrame::centreOf's arithmetic, which may differ in the last bit; these are the expressions
+// the tree's queries used, so that the grids and distances stay bit for bit what they were).
+inline Vec3 queryCentre(const CellFrame& f, const CellKey& key) {
+  return Vec3(cornerOf(f, key[0]), cornerOf(f, key[1]), cornerOf(f, key[2])) +
+         Vec3::Constant(0.5 * f.resolution);
+}
+
 // Fills `part`, the cells [from, from + part size) of a grid of frame `whole`: a dense cell is
 // Occupied if a map cell inside it is, else Free if one is known. A map cell no larger than a
 // dense cell is placed by its centre, a larger one fills the dense cells whose centres it holds.
@@ -137,9 +145,7 @@ void fillGrid(const CellBlocks& cells, const GridFrame& whole, const Index3& fro
         }
         if (!known) continue;
         const CellKey key = CellBlocks::keyInBlock(block, first);
-        const Index3 cell =
-            whole.cellOf(Vec3(cornerOf(f, key[0]), cornerOf(f, key[1]), cornerOf(f, key[2])) +
-                         Vec3::Constant(0.5 * f.resolution));
+        const Index3 cell = whole.cellOf(queryCentre(f, key));
         if ((cell.array() < from.array()).any() || (cell.array() > to.array()).any()) continue;
         combine(cell, occupied ? CellState::Occupied : CellState::Free);
       }
@@ -196,16 +202,13 @@ double OccupancyMap::clearance(const Vec3& point, double maxDistance) const {
   };
   const auto searchBlock = [&](const CellBlocks::Block& block) {
     if (block.occupied == 0) return;
-    const Vec3 lo =
-        Vec3(cornerOf(f, block.low[0]), cornerOf(f, block.low[1]), cornerOf(f, block.low[2])) +
-        Vec3::Constant(0.5 * f.resolution);
+    const Vec3 lo = queryCentre(f, block.low);
     if (gap2(lo, lo + Vec3::Constant((CellBlocks::kBlockSide - 1) * f.resolution)) >= best2) return;
     for (unsigned i = 0; i < CellBlocks::kBlockCells; ++i) {
       const float value = block.logOdds[i];
       if (value == CellBlocks::kUnknown || !f.occupied(value)) continue;
       const CellKey key = CellBlocks::keyInBlock(block, i);
-      const Vec3 centre = Vec3(cornerOf(f, key[0]), cornerOf(f, key[1]), cornerOf(f, key[2])) +
-                          Vec3::Constant(0.5 * f.resolution);
+      const Vec3 centre = queryCentre(f, key);
       best2 = std::min(best2, gap2(centre, centre));
     }
   };
