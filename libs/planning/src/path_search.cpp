@@ -279,8 +279,9 @@ struct PathSearcher::Query {
 void PathSearcher::prepare(const VoxelGrid& grid) {
   const size_t n = grid.cellCount();
   COINSPECT_ASSERT(n < static_cast<size_t>(std::numeric_limits<int32_t>::max()));
-  if (stamp_.size() != n) {
+  if (stamp_.size() < n) {
     // Only the stamps need their zeros; a cell's other entries are written when it is stamped.
+    // A smaller grid later uses the first cells: their stamps are older generations.
     stamp_.reset(n);
     weightStamp_.reset(n);
     g_.reset(n);
@@ -534,6 +535,11 @@ PathResult PathSearcher::search(const VoxelGrid& grid, const Vec3& start, const 
   if (found && !result.goalSnapped && (result.points.back() - goal).norm() > kSame)
     result.points.push_back(goal);
   return result;
+}
+
+PathSearcher& threadPathSearcher() {
+  thread_local PathSearcher searcher;
+  return searcher;
 }
 
 PathResult findPathAStar(const VoxelGrid& grid, const Vec3& start, const Vec3& goal,

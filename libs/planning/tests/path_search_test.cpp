@@ -7,6 +7,7 @@
 #include <functional>
 #include <limits>
 #include <queue>
+#include <thread>
 
 #include "coinspect/core/random.h"
 
@@ -423,20 +424,40 @@ TEST(PathSearch, WithoutPartialPathsEveryQueryEndsAsTheFullSearchDoes) {
   EXPECT_GT(exhausted, 15);
 }
 
-// Same query, same answer, also when the searcher is reused across grids and queries.
+// Same query, same answer, also when the searcher is reused across grids and queries: a
+// smaller grid (924 cells) after a larger one (1000) reads the cells the larger one stamped.
 TEST(PathSearch, ReusedSearcherGivesIdenticalResults) {
   const VoxelGrid grid = randomGrid(3, 0.15, 0.0, false);
   const VoxelGrid other = wallGrid();
   PathSearchOptions o;
   PathSearcher searcher;
   const Vec3 s = grid.centre(Index3(0, 0, 0)), g = grid.centre(Index3(13, 10, 5));
+  const Vec3 west(2.5, 5.5, 2.5), east(17.5, 5.5, 2.5);
   const PathResult first = searcher.thetaStar(grid, s, g, o);
-  searcher.aStar(other, Vec3(2.5, 5.5, 2.5), Vec3(17.5, 5.5, 2.5), o);
+  const PathResult wall = searcher.aStar(other, west, east, o);
+  EXPECT_EQ(wall.status, PathStatus::NoPath);        // the unknown window is closed
+  EXPECT_GT(wall.expansions, grid.cellCount() / 4);  // it stamped much of the shared cells
   searcher.thetaStar(grid, g, s, o);
   const PathResult again = searcher.thetaStar(grid, s, g, o);
   EXPECT_EQ(first.points, again.points);
   EXPECT_EQ(first.cost, again.cost);
   EXPECT_EQ(first.expansions, again.expansions);
+  PathSearchOptions throughWindow;
+  throughWindow.unknown = UnknownPolicy::Free;
+  const PathResult fresh = PathSearcher().aStar(other, west, east, throughWindow);
+  const PathResult wallAgain = searcher.aStar(other, west, east, throughWindow);
+  EXPECT_EQ(fresh.status, PathStatus::Found);
+  EXPECT_EQ(fresh.points, wallAgain.points);
+  EXPECT_EQ(fresh.expansions, wallAgain.expansions);
+}
+
+// Units deciding on one thread share its searcher; another thread has its own.
+TEST(PathSearch, ThreadPathSearcherIsOnePerThread) {
+  PathSearcher* here = &threadPathSearcher();
+  EXPECT_EQ(here, &threadPathSearcher());
+  PathSearcher* there = nullptr;
+  std::thread([&] { there = &threadPathSearcher(); }).join();
+  EXPECT_NE(here, there);
 }
 
 TEST(PathSearch, SegmentCheckSeesCornerGrazes) {

@@ -140,7 +140,7 @@ bool Flight::plan(const Vec3& from, double speed, const RobotMap& map,
       auto legOptions = options;
       legOptions.maxExpansions =
           points.size() == 1 ? options_.maxExpansions : options_.maxExpansions / 10;
-      auto result = searcher_.thetaStar(grid, current, target, legOptions);
+      auto result = planning::threadPathSearcher().thetaStar(grid, current, target, legOptions);
       if (points.size() == 1) {
         if (!trapped(result, grid)) {
           trappedSince_.reset();
@@ -153,7 +153,7 @@ bool Flight::plan(const Vec3& from, double speed, const RobotMap& map,
           // sphere fits: out at that clearance, still preferring the middle of free space
           // (softClearance).
           legOptions.clearance = ownSphereOptions(grid).clearance;
-          result = searcher_.thetaStar(grid, current, target, legOptions);
+          result = planning::threadPathSearcher().thetaStar(grid, current, target, legOptions);
           escaping = result.status == planning::PathStatus::Found;
         }
       }

@@ -105,9 +105,10 @@ class CellArray {
   size_t size_ = 0;
 };
 
-// Reusable search state: the per-cell arrays are allocated once per grid size and reset in O(1)
-// between queries by a generation stamp, so repeated queries on a large grid cost only what they
-// touch. Not thread-safe; use one searcher per thread.
+// Reusable search state: the per-cell arrays are allocated for the largest grid seen and reset in
+// O(1) between queries by a generation stamp, so repeated queries on a large grid cost only what
+// they touch. A query's answer does not depend on the searcher's earlier queries, on this grid or
+// another. Not thread-safe; use one searcher per thread (threadPathSearcher()).
 class PathSearcher {
  public:
   // The grid must have a clearance field when clearance or softClearance is > 0.
@@ -137,6 +138,13 @@ class PathSearcher {
   std::vector<Index3> queue_;        // flood()'s
   uint32_t generation_ = 0;
 };
+
+// This thread's searcher, for planners that search on behalf of many units. Each unit holding
+// its own kept arrays of 29 bytes per cell of its grid, and over a long mission its searches
+// touch most of them: 48 UAVs on `slei-d`'s 6 M-cell grids held several GB. A thread's units
+// share one set instead; since no answer depends on earlier queries (above), which thread a
+// unit decides on changes nothing.
+PathSearcher& threadPathSearcher();
 
 // One-shot conveniences (allocate a searcher).
 PathResult findPathAStar(const VoxelGrid& grid, const Vec3& start, const Vec3& goal,

@@ -132,7 +132,6 @@ class Flight {
   FlightOptions options_;
   std::vector<std::string> fleet_;
   size_t self_;
-  planning::PathSearcher searcher_;
 
   Phase phase_ = Phase::Takeoff;
   bool started_ = false;
