@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""The SLEI3D tables of doc/strategies.md ("Table I, our runs"): feature missions of several
-methods on one generated scene for several scene seeds, then one markdown row per method.
+"""The SLEI3D tables of doc/strategies.md ("Table I, our runs") and doc/slei3d-runs.md: feature
+missions of several methods on one generated scene for several scene seeds, then one markdown
+row per method.
 
 usage: bench/slei_table.py BUILD_DIR OUT_DIR [--scene slei-a] [--methods "slei3d slei-fix ..."]
                            [--seeds "1 2 3"] [--run-seed 1] [--jobs 2] [--set KEY=VALUE ...]

@@ -32,11 +32,11 @@ agent::AgentCommand Slei3dStrategy::decideInspector(const agent::AgentView& view
   }
   if (!myExplorer_) myExplorer_ = subgroup->explorer;
   // Its own inspections; caric-team's inspectors also the results they were handed (a feature
-  // in either is skipped, and the status lists it). Measured both ways on slei-c (doc/
-  // strategies.md, "Table I, our runs"): the skip slowed slei3d (94 % collected at a mean 1584 s
-  // on six scenes with it, 1500 s without), whose explorers, carrying the same results, hand
-  // none of them out anyway; caric-team reached 94 % at 1614, 1752, 1673 s on scene seeds 1-3
-  // with it, at 1804 s, not within 1950 s and 1633 s without.
+  // in either is skipped, and the status lists it). Measured both ways on slei-c
+  // (doc/slei3d-runs.md): the skip slowed slei3d (94 % collected at a mean 1584 s on six scenes
+  // with it, 1500 s without), whose explorers, carrying the same results, hand none of them out
+  // anyway; caric-team reached 94 % at 1614, 1752, 1673 s on scene seeds 1-3 with it, at 1804 s,
+  // not within 1950 s and 1633 s without.
   for (const uint32_t f : view.inspectedFeatures)
     inspected_.insert(f);
   if (options_.variant == SleiVariant::Team)
