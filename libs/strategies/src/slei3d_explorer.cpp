@@ -1012,6 +1012,7 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
       inspectors_.clear();
     }
     adoptInspectors(view, reply->adopt);
+    hubHandoutDue_ = options_.variant == SleiVariant::Team;
     // [energy]: it charges above the station before it goes on; the station waits for the time
     // the report's level needs.
     if (unit_.fleet[unit_.self].battery.limited() && view.energy < kCharged) {
@@ -1022,6 +1023,17 @@ agent::AgentCommand Slei3dStrategy::decideExplorer(const agent::AgentView& view)
     }
   }
   if (charging_) return charge(view, subgroup->station);
+  // caric-team hands out on each return to its hub, right after the station's reply, before it
+  // goes on. Checked only every `handout_period` while exploring, it never came while the
+  // explorer was at the hub: slei-a, scene seed 1, its explorers met the station there at 128
+  // and 139 s with 16 and 11 features found, and the first feature was handed out at 620 s,
+  // once a box was explored. Done with the hand-outs it explores from the hub, also when the
+  // reply gave it a new box (going to the box's entry first instead flew the same six slei-a
+  // scenes, event for event).
+  if (hubHandoutDue_) {
+    hubHandoutDue_ = false;
+    planHandout(view);
+  }
 
   // Done early: catch the station at one of its stops rather than wait for the meeting.
   // Without inspectors (none in its share, or given to others while it was presumed lost) its

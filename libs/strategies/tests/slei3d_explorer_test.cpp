@@ -7,8 +7,9 @@
 // reserved, it fetches done results on its way to the station; pushed off its station meeting
 // point, it goes back; with `handout_at_box_end` it hands out nothing before its box is
 // explored, and never a feature whose result it carries; caric-team's explorer splits its
-// features among its free inspectors at the hub, comes back there once its last box is
-// explored (its first one too, before any reply), and waits on its own side of the station.
+// features among its free inspectors at the hub, hands out there on each return before it goes
+// on to its box, comes back there once its last box is explored (its first one too, before any
+// reply), and waits on its own side of the station.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -451,6 +452,58 @@ TEST(Slei3dExplorer, CaricTeamDoneWithItsFirstBoxBeforeAnyReplyGoesToTheHub) {
   EXPECT_LT(run.nearestBox1, 8.0);  // it explored box 1
   EXPECT_GT(run.backAt, 0.0);       // and came back to the hub
   EXPECT_LT(run.backAt, 250.0);
+}
+
+// A caric-team e1 with inspector i1 in sight, its first box box 0 by the hub (box 0's corner),
+// finds feature 7 at 0.5 s and meets the station at 1 s; the reply gives it box 1, 40 m away. It
+// hands the feature out at the hub before it leaves, then goes on to box 1. (The hand-out was
+// checked only while it explored, by then away from the hub: on slei-a nothing was handed out
+// before a box was explored.)
+TEST(Slei3dExplorer, CaricTeamHandsOutAtTheHubBeforeItGoesOnToItsBox) {
+  auto explorer = makeExplorer(
+      Config::fromText("", "run.ini"), "caric-team",
+      {{"gcs", Role::GroundStation}, {"e1", Role::Explorer}, {"i1", Role::Photographer}});
+  FleetPlan plan;
+  plan.subgroups.push_back({1, {2}, 0, {cornerOf(0), 400.0}, 0});
+  Reply reply;
+  reply.meetingNumber = 1;
+  reply.box = 1;
+  reply.next = {cornerOf(0), 400.0};
+  reply.stops = {reply.next};
+  agent::AgentView view = startView();
+  agent::NeighbourInfo inspector{"i1", Role::Photographer, {}};
+  inspector.odometry.position = Vec3(-6, 4, 3);
+  view.neighbours = {inspector};
+  double ordersAt = -1.0, atBox1 = -1.0;  // s, -1: never
+  std::set<uint32_t> handed;
+  std::vector<agent::ReceivedMessage> answers;
+  for (int step = 0; step * 0.1 <= 150.0 && atBox1 < 0.0; ++step) {
+    view.time = step * 0.1;
+    view.messages = std::move(answers);
+    answers.clear();
+    if (step == 0) view.messages.push_back({"gcs", kPlanTopic, encode(plan)});
+    if (step == 10) view.messages.push_back({"gcs", kReplyTopic, encode(reply)});
+    view.detectedFeatures.clear();
+    if (step == 5) view.detectedFeatures.push_back({7, Vec3(-3, 8, 2), -Vec3::UnitY(), 2.0});
+    const auto command = explorer->decide(view);
+    if (command.setpoint) view.odometry.position = command.setpoint->position;
+    for (const auto& message : command.messages) {
+      const auto orders =
+          message.topic == kOrdersTopic ? decodeOrders(message.bytes) : std::nullopt;
+      if (!orders) continue;
+      if (ordersAt < 0.0) ordersAt = view.time;
+      for (const auto& task : orders->tasks)
+        handed.insert(task.id);
+      Status status;  // taken: the list still to do
+      status.lastOrders = orders->sequence;
+      status.listLeft = static_cast<uint32_t>(orders->tasks.size());
+      answers.push_back({message.to, kStatusTopic, encode(status), view.time});
+    }
+    if ((view.odometry.position - kBoxes[1].center).head<2>().norm() < 8.0) atBox1 = view.time;
+  }
+  EXPECT_EQ(handed, (std::set<uint32_t>{7}));
+  EXPECT_GT(ordersAt, 0.0);
+  EXPECT_GT(atBox1, ordersAt);  // handed out first, then on to its box
 }
 
 // Where e1, a caric-team explorer with nothing left, waits at its static station's hub (6, 0)

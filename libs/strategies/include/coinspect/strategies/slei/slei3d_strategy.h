@@ -332,6 +332,9 @@ class Slei3dStrategy : public agent::Strategy {
   size_t earlyStop_ = 0;               // which of stationStops_ earlyPlace_ is
   bool earlyTried_ = false;            // since the last reply
   int32_t nextBox_ = -1;               // the box the last reply reserved for it (-1: none)
+  // caric-team: a reply came at the hub, and the hand-out there is still to plan (after any
+  // charging).
+  bool hubHandoutDue_ = false;
   // [energy]: after a reply it charges above the station before it goes on (the station waits);
   // given up when the level has not risen for a while (no charger in reach).
   bool charging_ = false;
