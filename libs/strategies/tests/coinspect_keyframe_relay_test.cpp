@@ -120,5 +120,29 @@ TEST(KeyFrameRelay, SendsWhatANeighbourLacksNewestFirstAndDropsUavPoints) {
   EXPECT_TRUE(explorer.exchange(unseen).empty());
 }
 
+// A frame relayed to two robots as the same bytes is decoded into one object both hold; the same
+// producer and id with other points (cleaned by another robot) is a frame of its own.
+TEST(KeyFrameRelay, RobotsReceivingTheSameFrameShareOneDecodedCopy) {
+  const auto received = [](const std::string& name, const std::vector<uint8_t>& bytes) {
+    KeyFrameRelay relay(RelayOptions{}, kFleet);
+    auto view = viewOf(name, 5.0, {5, 0, 10}, {"jurong"});
+    view.messages.push_back({"jurong", kFrameTopic, bytes, 5.0});
+    relay.exchange(view);
+    auto got = relay.takeNew(10);
+    EXPECT_EQ(got.size(), 1u);
+    return got.empty() ? nullptr : got[0];
+  };
+  const auto bytes = encodeKeyFrame(*frameOf("jurong", 4, 2.0, {{30, 1, 0}, {31, 1, 0}}), 1);
+  const auto cleaned = encodeKeyFrame(*frameOf("jurong", 4, 2.0, {{30, 1, 0}}), 1);
+  const auto first = received("raffles", bytes);
+  const auto second = received("sentosa", bytes);
+  const auto other = received("gcs", cleaned);
+  ASSERT_TRUE(first && second && other);
+  EXPECT_EQ(first.get(), second.get());
+  EXPECT_NE(first.get(), other.get());
+  EXPECT_EQ(first->points.size(), 2u);
+  EXPECT_EQ(other->points.size(), 1u);
+}
+
 }  // namespace
 }  // namespace coinspect::strategies::coinspect_strategy

@@ -6,7 +6,9 @@
 // (id ranges per producer, a few bytes); a neighbour that holds frames missing from a digest sends
 // them straight to its author, at most `framesPerReply` per digest. Frames travel as messages,
 // points quantised to 1 cm around the scan position. Points of UAVs in sight (rotors, bodies) are
-// removed when a robot first gets a frame, so relayed frames carry no phantom obstacles.
+// removed when a robot first gets a frame, so relayed frames carry no phantom obstacles. Robots
+// that receive a frame as the same bytes hold one decoded copy (memory: a fleet of 48 kept one
+// each).
 #pragma once
 
 #include <cstdint>
