@@ -79,6 +79,32 @@ OccupancyMap& OccupancyMap::operator=(OccupancyMap&&) noexcept = default;
 
 void OccupancyMap::insertScan(const Vec3& origin, const std::vector<Eigen::Vector3f>& worldPoints) {
   ++revision_;
+  scratch_.clear();
+  collectScan(origin, worldPoints, scratch_, sortBuffer_);
+  applyScratch(options_.raysClearOccupied);
+}
+
+OccupancyMap::ScanCells OccupancyMap::scanCells(
+    const Vec3& origin, const std::vector<Eigen::Vector3f>& worldPoints) const {
+  ScanCells cells{options_.resolution, options_.maxRange, {}};
+  std::vector<uint64_t> buffer;
+  collectScan(origin, worldPoints, cells.codes, buffer);
+  sortUniqueCodes(cells.codes, buffer);
+  cells.codes.shrink_to_fit();  // kept while other robots may apply them
+  return cells;
+}
+
+void OccupancyMap::insertScanCells(const ScanCells& cells) {
+  COINSPECT_ASSERT(cells.resolution == options_.resolution);
+  COINSPECT_ASSERT(cells.maxRange == options_.maxRange);
+  ++revision_;
+  cells_->applySorted(cells.codes, options_.raysClearOccupied,
+                      raysClearAt_ ? &raysClearAt_ : nullptr);
+}
+
+void OccupancyMap::collectScan(const Vec3& origin, const std::vector<Eigen::Vector3f>& worldPoints,
+                               std::vector<uint64_t>& codes,
+                               std::vector<uint64_t>& sortBuffer) const {
   const CellFrame& frame = cells_->frame();
   const octomap::point3d sensor(static_cast<float>(origin.x()), static_cast<float>(origin.y()),
                                 static_cast<float>(origin.z()));
@@ -100,7 +126,7 @@ void OccupancyMap::insertScan(const Vec3& origin, const std::vector<Eigen::Vecto
     if (!frame.keyOf(end, key)) continue;  // beyond the key range
     ends.push_back(updateCode(key, !capped));
   }
-  sortUniqueCodes(ends, sortBuffer_);
+  sortUniqueCodes(ends, sortBuffer);
 
   // 2. Free cells along every distinct ray (the end cell excluded), then the occupied ends. Rays
   // from one origin share most cells near it: a direct-mapped table of recent codes drops most
@@ -108,7 +134,6 @@ void OccupancyMap::insertScan(const Vec3& origin, const std::vector<Eigen::Vecto
   constexpr int kFilterBits = 13;
   thread_local std::vector<uint64_t> recent;
   recent.assign(size_t{1} << kFilterBits, ~uint64_t{0});
-  scratch_.clear();
   for (const uint64_t end : ends) {
     const Eigen::Vector3f c = frame.floatCentreOf(keyOfMorton(end >> 1));
     const octomap::point3d endCentre(c.x(), c.y(), c.z());
@@ -117,11 +142,10 @@ void OccupancyMap::insertScan(const Vec3& origin, const std::vector<Eigen::Vecto
       uint64_t& slot = recent[(code * 0x9E3779B97F4A7C15ULL) >> (64 - kFilterBits)];
       if (slot == code) return;
       slot = code;
-      scratch_.push_back(code);
+      codes.push_back(code);
     });
-    if (end & 1U) scratch_.push_back(end);
+    if (end & 1U) codes.push_back(end);
   }
-  applyScratch(options_.raysClearOccupied);
 }
 
 void OccupancyMap::merge(const OccupancyMap& other) {

@@ -269,6 +269,48 @@ TEST(OccupancyMap, MergeOfTwoHalfMapsEqualsTheMapOfBothScans) {
   EXPECT_EQ(both.knownCount(), half1.knownCount());
 }
 
+// The cells of a scan found by one map and applied to others leave each as insertScan would:
+// the same cells with the same log-odds and counts, under either clearing rule, with the
+// receiver's own raysClearAt, over what the receiver already held (a wall in front of a blob).
+TEST(OccupancyMap, ScanCellsFoundOnceApplyAsInsertScanDoes) {
+  const Vec3 origin(0.1, 0.2, 1.3), other(-1.3, 2.2, 2.7);
+  Points scan = wallAt(12.25, origin, 6.0, 0.07);
+  for (const auto& p : floorAround(origin, 30.0))
+    scan.push_back(p);
+  scan.emplace_back(45.0f, 0.2f, 1.3f);  // beyond the range cap: clears up to it only
+  const Points blobs{{6.2f, 0.2f, 1.3f}, {6.2f, 4.2f, 1.3f}};
+  for (const bool raysClear : {true, false}) {
+    const OccupancyMap finder({0.5, 30.0, raysClear});
+    const OccupancyMap::ScanCells cells = finder.scanCells(origin, scan);
+    EXPECT_TRUE(std::is_sorted(cells.codes.begin(), cells.codes.end()));
+    OccupancyMap inserted({0.5, 30.0, raysClear}), applied({0.5, 30.0, raysClear});
+    for (OccupancyMap* map : {&inserted, &applied}) {
+      map->setRaysClearAt([](const Vec3& cell) { return cell.y() < 2.0; });
+      map->insertScan(other, blobs);
+    }
+    const uint64_t before = applied.revision();
+    for (int i = 0; i < 3; ++i) {  // three misses clear a hit where rays may clear
+      inserted.insertScan(origin, scan);
+      applied.insertScanCells(cells);
+    }
+    EXPECT_EQ(applied.revision(), before + 3);
+    EXPECT_EQ(leaves(applied), leaves(inserted)) << raysClear;
+    EXPECT_EQ(applied.knownCount(), inserted.knownCount());
+    EXPECT_EQ(applied.occupiedCount(), inserted.occupiedCount());
+    EXPECT_EQ(applied.state(Vec3(6.25, 0.25, 1.25)), CellState::Free) << raysClear;
+    EXPECT_EQ(applied.state(Vec3(6.25, 4.25, 1.25)),
+              raysClear ? CellState::Free : CellState::Occupied);
+  }
+}
+
+TEST(OccupancyMapDeathTest, ScanCellsApplyOnlyToMapsOfTheirResolutionAndRangeCap) {
+  const Vec3 origin(0.1, 0.2, 1.3);
+  const auto cells = OccupancyMap({0.5, 30.0}).scanCells(origin, wallAt(6.25, origin, 1.0, 0.1));
+  OccupancyMap coarse({1.0, 30.0}), shortSighted({0.5, 20.0});
+  EXPECT_DEATH(coarse.insertScanCells(cells), "resolution");
+  EXPECT_DEATH(shortSighted.insertScanCells(cells), "maxRange");
+}
+
 TEST(OccupancyMap, MergingAMapIntoItselfRepeatsEveryObservation) {
   OccupancyMap map({0.5, 30.0});
   const Vec3 origin(0.1, 0.2, 1.3);

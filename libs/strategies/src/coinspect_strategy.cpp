@@ -230,7 +230,7 @@ agent::AgentCommand CoinspectStrategy::decide(const agent::AgentView& view) {
   }
   if (!initialised_) initialise(view);
   for (const auto& frame : relay_.takeNew(kFramesPerDecision))
-    map_->insertFrame(*frame);
+    map_->insertFrame(frame);
   map_->update(view);
   map_->refresh(view.time);
   contact_.observe(view);

@@ -5,6 +5,7 @@
 
 #include "coinspect/core/error.h"
 #include "coinspect/planning/coverage.h"
+#include "coinspect/strategies/runtime/scan_cells_cache.h"
 
 namespace coinspect::strategies::runtime {
 
@@ -129,9 +130,9 @@ std::vector<Eigen::Vector3f> withoutUavPoints(const std::vector<Eigen::Vector3f>
   return kept;
 }
 
-void RobotMap::insertFrame(const agent::KeyFrame& frame) {
-  if (frame.points.empty()) return;
-  map_.insertScan(frame.position, frame.points);
+void RobotMap::insertFrame(const agent::KeyFrameView& frame) {
+  if (!frame || frame->points.empty()) return;
+  map_.insertScanCells(*ScanCellsCache::shared().cellsOf(frame, map_));
   ++scansInserted_;
 }
 

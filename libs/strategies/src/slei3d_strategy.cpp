@@ -219,7 +219,7 @@ agent::AgentCommand Slei3dStrategy::decide(const agent::AgentView& view) {
   auto relayed = relay_->exchange(view);
   if (map_) {
     for (const auto& frame : relay_->takeNew(kFramesPerDecision))
-      map_->insertFrame(*frame);
+      map_->insertFrame(frame);
     map_->update(view);
     map_->refresh(view.time);
   } else {

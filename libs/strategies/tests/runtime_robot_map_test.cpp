@@ -56,10 +56,10 @@ TEST(RobotMap, RaysClearWhatWasSeenInTheOpenButNotNearTheBoxes) {
     options.boxMargin = 2.0;
     options.raysClearAwayFromBoxes = clears;
     RobotMap map(options, boxes, 0.0);
-    map.insertFrame(blobs);
+    map.insertFrame(std::make_shared<const agent::KeyFrame>(blobs));
     ASSERT_EQ(map.map().state(Vec3(5.25, 0.25, 3.25)), mapping::CellState::Occupied);
     for (int i = 0; i < 12; ++i)
-      map.insertFrame(wall);
+      map.insertFrame(std::make_shared<const agent::KeyFrame>(wall));
     EXPECT_EQ(map.map().state(Vec3(5.25, 0.25, 3.25)),
               clears ? mapping::CellState::Free : mapping::CellState::Occupied)
         << clears;
@@ -73,7 +73,7 @@ TEST(RobotMap, SurfaceNearBoxesKeepsMappedStructureInABoxNotTheGroundNorStructur
   RobotMapOptions options;
   options.mapResolution = 0.5;
   RobotMap map(options, boxes, 0.0);
-  map.insertFrame(wallsAndGround());
+  map.insertFrame(std::make_shared<const agent::KeyFrame>(wallsAndGround()));
   const auto all = map.map().surfaceVoxels(map.region().min, map.region().max);
   const auto near = map.surfaceNearBoxes(boxes, 1.0);
   ASSERT_FALSE(near.empty());
@@ -138,7 +138,7 @@ TEST(RobotMap, GridRebuiltWhereTheMapChangedEqualsAGridReadWhole) {
       if (step > 0)
         for (auto& p : frame.points)
           p += Eigen::Vector3f(0.0f, 0.5f * static_cast<float>(step), 0.0f);
-      map.insertFrame(frame);
+      map.insertFrame(std::make_shared<const agent::KeyFrame>(frame));
       ASSERT_TRUE(map.refresh(10.0 * (step + 1), true));
       const size_t changed = check(step);
       EXPECT_GE(changed, changedBefore);

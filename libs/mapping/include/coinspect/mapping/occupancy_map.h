@@ -68,6 +68,17 @@ class OccupancyMap {
   // per scan. Used for own sweeps and for received key frames alike. Points beyond the key range
   // extent (+-16 km at 0.5 m) are skipped; a non-finite point or origin is a bug (assert).
   void insertScan(const Vec3& origin, const std::vector<Eigen::Vector3f>& worldPoints);
+  // insertScan in two halves: the cells a scan observes depend only on the scan, the resolution
+  // and the range cap, so robots inserting the same relayed key frame can find them once and
+  // apply them each to their own map (the same result as insertScan, cell for cell).
+  struct ScanCells {
+    double resolution = 0.0;
+    double maxRange = 0.0;
+    std::vector<uint64_t> codes;  // sorted update codes, one per cell (see src/cell_blocks.h)
+  };
+  ScanCells scanCells(const Vec3& origin, const std::vector<Eigen::Vector3f>& worldPoints) const;
+  // Applies cells found by a map of the same resolution and range cap (assert).
+  void insertScanCells(const ScanCells& cells);
   // Adds every known cell of `other` (same resolution required) as one observation each.
   void merge(const OccupancyMap& other);
   // One free observation for the cell of each of `freePoints`, one occupied observation for the
@@ -129,6 +140,9 @@ class OccupancyMap {
  private:
   // Sorts and deduplicates the update codes in scratch_ (occupied wins) and applies them.
   void applyScratch(bool missesClearOccupied);
+  // The unsorted update codes of one scan (repeats possible) appended to `codes`.
+  void collectScan(const Vec3& origin, const std::vector<Eigen::Vector3f>& worldPoints,
+                   std::vector<uint64_t>& codes, std::vector<uint64_t>& sortBuffer) const;
 
   OccupancyMapOptions options_;
   std::function<bool(const Vec3&)> raysClearAt_;

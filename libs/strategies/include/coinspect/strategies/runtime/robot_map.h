@@ -75,8 +75,9 @@ class RobotMap {
 
   // Inserts what the view brings: own sweeps or own key frames, and received key frames.
   void update(const agent::AgentView& view);
-  // Inserts a key frame as it is (its UAV points already removed).
-  void insertFrame(const agent::KeyFrame& frame);
+  // Inserts a key frame as it is (its UAV points already removed); the cells it observes are
+  // found once for all robots inserting the same frame object (ScanCellsCache::shared()).
+  void insertFrame(const agent::KeyFrameView& frame);
   // Rebuilds the planning grid when the map changed since the last rebuild and `rebuildPeriod`
   // has passed since it (or when `force`). True when it rebuilt.
   bool refresh(double time, bool force = false);
