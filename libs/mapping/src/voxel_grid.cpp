@@ -8,51 +8,6 @@
 
 namespace coinspect::mapping {
 
-namespace {
-
-// One pass of Felzenszwalb & Huttenlocher's exact 1-D squared distance transform (lower
-// envelope of parabolas), applied along each axis in turn: O(n) per line.
-void distanceTransform1d(const float* in, float* out, int n, std::vector<int>& v,
-                         std::vector<float>& z) {
-  constexpr float kInf = std::numeric_limits<float>::infinity();
-  v.assign(n, 0);
-  z.assign(n + 1, 0.0f);
-  int k = -1;
-  for (int q = 0; q < n; ++q) {
-    if (in[q] == kInf) continue;
-    while (k >= 0) {
-      const float s = ((in[q] + q * q) - (in[v[k]] + v[k] * v[k])) / (2.0f * (q - v[k]));
-      if (s > z[k]) {
-        ++k;
-        v[k] = q;
-        z[k] = s;
-        z[k + 1] = kInf;
-        break;
-      }
-      --k;
-    }
-    if (k < 0) {
-      k = 0;
-      v[0] = q;
-      z[0] = -kInf;
-      z[1] = kInf;
-    }
-  }
-  if (k < 0) {
-    std::fill(out, out + n, kInf);
-    return;
-  }
-  int j = 0;
-  for (int q = 0; q < n; ++q) {
-    while (z[j + 1] < q)
-      ++j;
-    const float d = static_cast<float>(q - v[j]);
-    out[q] = d * d + in[v[j]];
-  }
-}
-
-}  // namespace
-
 VoxelGrid::VoxelGrid(const Vec3& origin, double resolution, const Index3& size, CellState fill)
     : frame_{origin, resolution, size} {
   COINSPECT_ASSERT(resolution > 0.0 && (size.array() >= 1).all());
@@ -97,19 +52,13 @@ void VoxelGrid::transformWindow(const Index3& low, const Index3& high) {
   // Reused: a fresh buffer of up to the whole grid per rebuild was paid in page faults.
   thread_local std::vector<float> squared;
   squared.resize(static_cast<size_t>(sx) * sy * sz);
-  // Separable transform: x lines, then y, then z (squared cell distances). A pass's lines are
-  // those the next passes read for the window's cells: every x line of the grown box, the y
-  // lines over the window's x only, the z lines over its x and y only (each line's result is
-  // the same whichever other lines are transformed).
-  // A squared distance over the cap's (capCells()^2) reads as the cap in the end whatever it
-  // is, and one that large after a pass stays over it after the next: such values are made
-  // infinite between passes, lines with nothing finite or with only blocking cells are left as
-  // they are (their transform is themselves), and in open space most lines are one or the
-  // other. The values under the cap are the same exact squared distances.
+  // Separable transform: x lines, then y, then z (squared cell distances). A pass computes
+  // what the next passes read for the window's cells: every x line of the grown box, the y pass
+  // over the window's x only, the z pass over its x and y only. A squared distance over the
+  // cap's (capCells()^2) reads as the cap in the end whatever it is.
   const int cap = capCells();
-  // The x pass reads the states: its input is 0 (blocking) or infinite, so a cell's result is
-  // the squared distance to the nearest blocking cell of its line, found by one scan each way
-  // (the lower envelope of the general pass gives the same values, at several times the cost).
+  // The x pass reads the states: a cell's result is the squared distance to the nearest
+  // blocking cell of its line, found by one scan each way (infinite beyond the cap).
   thread_local std::vector<int> before;
   before.resize(static_cast<size_t>(sx));
   constexpr int kFar = 1 << 20;  // no blocking cell on that side
@@ -129,64 +78,60 @@ void VoxelGrid::transformWindow(const Index3& low, const Index3& high) {
         squared[i + x] = d > cap ? kInf : static_cast<float>(d * d);
       }
     }
-  // The y and z passes take their lines kBlock at a time, neighbours in x: a line's cells lie a
-  // row or a layer apart, and gathering one line at a time missed the cache at every cell (a
-  // fifth of the transform's time); neighbouring lines share each cache line fetched.
-  constexpr int kBlock = 16;
-  const int longest = std::max({sy, sz});
-  thread_local std::vector<float> block;
-  block.resize(static_cast<size_t>(kBlock) * longest);
-  std::vector<float> result(longest);
-  std::vector<int> v;
-  std::vector<float> cuts;
-  const float over = static_cast<float>(cap) * static_cast<float>(cap);
-  // The `lines` lines (at most kBlock) starting at `first`, `first` + 1, ..., each `count` cells
-  // `stride` apart.
-  const auto transformLines = [&](size_t first, int lines, int count, size_t stride) {
-    for (int q = 0; q < count; ++q) {
-      const float* cells = &squared[first + q * stride];
-      for (int k = 0; k < lines; ++k)
-        block[static_cast<size_t>(k) * count + q] = cells[k];
-    }
-    bool changed[kBlock] = {};
-    for (int k = 0; k < lines; ++k) {
-      float* line = &block[static_cast<size_t>(k) * count];
-      bool anyFinite = false, allZero = true;
-      for (int q = 0; q < count; ++q) {
-        anyFinite = anyFinite || line[q] != kInf;
-        allZero = allZero && line[q] == 0.0f;
+  // The y and z passes: a window cell's squared distance is the least over the cells k <= cap
+  // away along the axis of their value plus k^2. A squared distance under the cap's comes from a
+  // blocking cell within the cap along every axis, so those values are exact; the others end over
+  // the cap's and read as the cap (as infinite ones do). Both passes take whole rows of the
+  // window's x cells, neighbours in memory, the rows k before and after at once (vectorised by
+  // the compiler): gathering strided lines for the lower envelope of parabolas, as before
+  // 2026-12-08, took 2.6 times as long.
+  const int wx = high.x() - low.x() + 1, wy = high.y() - low.y() + 1;
+  // out = the least of row(at) + (at - centre)^2 over at within cap of centre and [first, last].
+  const auto lowest = [&](float* __restrict out, int centre, int first, int last, const auto& row) {
+    std::copy_n(row(centre), wx, out);
+    for (int k = 1; k <= cap; ++k) {
+      const float k2 = static_cast<float>(k * k);
+      const float* __restrict a = centre - k >= first ? row(centre - k) : nullptr;
+      const float* __restrict b = centre + k <= last ? row(centre + k) : nullptr;
+      if (a && b) {
+        for (int x = 0; x < wx; ++x)
+          out[x] = std::min(out[x], std::min(a[x], b[x]) + k2);
+      } else if (a || b) {
+        const float* __restrict in = a ? a : b;
+        for (int x = 0; x < wx; ++x)
+          out[x] = std::min(out[x], in[x] + k2);
       }
-      if (!anyFinite || allZero) continue;
-      distanceTransform1d(line, result.data(), count, v, cuts);
-      for (int q = 0; q < count; ++q)
-        line[q] = result[q] > over ? kInf : result[q];
-      changed[k] = true;
-    }
-    for (int q = 0; q < count; ++q) {
-      float* cells = &squared[first + q * stride];
-      for (int k = 0; k < lines; ++k)
-        if (changed[k]) cells[k] = block[static_cast<size_t>(k) * count + q];
     }
   };
-  const auto local = [&](int x, int y, int z) {
-    return (static_cast<size_t>(z - from.z()) * sy + (y - from.y())) * sx + (x - from.x());
+  // y pass: the window's x and y, every z of the grown box, into `alongY` (wx * wy per layer).
+  thread_local std::vector<float> alongY;
+  alongY.resize(static_cast<size_t>(wx) * wy * sz);
+  const auto inY = [&](int y, int z) {
+    return &alongY[(static_cast<size_t>(z - from.z()) * wy + (y - low.y())) * wx];
   };
   for (int z = from.z(); z <= to.z(); ++z)
-    for (int x = low.x(); x <= high.x(); x += kBlock)
-      transformLines(local(x, from.y(), z), std::min(kBlock, high.x() - x + 1), sy,
-                     static_cast<size_t>(sx));
-  for (int y = low.y(); y <= high.y(); ++y)
-    for (int x = low.x(); x <= high.x(); x += kBlock)
-      transformLines(local(x, y, from.z()), std::min(kBlock, high.x() - x + 1), sz,
-                     static_cast<size_t>(sx) * sy);
+    for (int y = low.y(); y <= high.y(); ++y)
+      lowest(inY(y, z), y, from.y(), to.y(), [&](int at) {
+        return &squared[(static_cast<size_t>(z - from.z()) * sy + (at - from.y())) * sx +
+                        (low.x() - from.x())];
+      });
+  // z pass: the window's cells, then their clearance from a table by squared distance (one
+  // entry past the cap's for every larger one): the same values as the square root's.
   const float capF = static_cast<float>(clearanceCap_);
   const float res = static_cast<float>(frame_.resolution);
+  const int over = cap * cap + 1;
+  thread_local std::vector<float> metres;
+  metres.resize(static_cast<size_t>(over) + 1);
+  for (int d = 0; d <= over; ++d)
+    metres[d] = std::min(capF, std::sqrt(static_cast<float>(d)) * res);
+  thread_local std::vector<float> alongZ;
+  alongZ.resize(static_cast<size_t>(wx));
   for (int z = low.z(); z <= high.z(); ++z)
     for (int y = low.y(); y <= high.y(); ++y) {
-      const size_t row = linear(Index3(low.x(), y, z));
-      const size_t first = local(low.x(), y, z);
-      for (int x = 0; x <= high.x() - low.x(); ++x)
-        clearance_[row + x] = std::min(capF, std::sqrt(squared[first + x]) * res);
+      lowest(alongZ.data(), z, from.z(), to.z(), [&](int at) { return inY(y, at); });
+      float* row = &clearance_[linear(Index3(low.x(), y, z))];
+      for (int x = 0; x < wx; ++x)
+        row[x] = metres[static_cast<size_t>(std::min(alongZ[x], static_cast<float>(over)))];
     }
 }
 
