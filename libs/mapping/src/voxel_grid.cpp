@@ -83,8 +83,8 @@ void VoxelGrid::transformWindow(const Index3& low, const Index3& high) {
   // blocking cell within the cap along every axis, so those values are exact; the others end over
   // the cap's and read as the cap (as infinite ones do). Both passes take whole rows of the
   // window's x cells, neighbours in memory, the rows k before and after at once (vectorised by
-  // the compiler): gathering strided lines for the lower envelope of parabolas, as before
-  // 2026-12-08, took about twice as long (doc/benchmarks.md, "Path search").
+  // the compiler): gathering strided lines for the lower envelope of parabolas, as this did
+  // until 2026-12-07, took about twice as long (doc/benchmarks.md, "Path search").
   const int wx = high.x() - low.x() + 1, wy = high.y() - low.y() + 1;
   // out = the least of row(at) + (at - centre)^2 over at within cap of centre and [first, last].
   const auto lowest = [&](float* __restrict out, int centre, int first, int last, const auto& row) {
