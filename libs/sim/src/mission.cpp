@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <thread>
 
 #include "coinspect/core/error.h"
@@ -467,14 +466,7 @@ void Mission::Impl::capture(size_t i) {
 }
 
 void Mission::Impl::hashStates() {
-  const auto mix = [this](double value) {
-    unsigned char bytes[sizeof(double)];
-    std::memcpy(bytes, &value, sizeof(double));
-    for (const unsigned char byte : bytes) {
-      digest ^= byte;
-      digest *= 1099511628211ull;
-    }
-  };
+  const auto mix = [this](double value) { digest = core::fnv1a(&value, sizeof value, digest); };
   for (const auto& unit : units) {
     const auto& s = unit.state();
     for (int k = 0; k < 3; ++k) {

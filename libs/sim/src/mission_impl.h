@@ -13,6 +13,7 @@
 #include "coinspect/comms/key_frame_exchange.h"
 #include "coinspect/comms/link_model.h"
 #include "coinspect/comms/network.h"
+#include "coinspect/core/hash.h"
 #include "coinspect/core/worker_pool.h"
 #include "coinspect/sensing/camera_model.h"
 #include "coinspect/sensing/inspection_scorer.h"
@@ -111,6 +112,8 @@ struct Mission::Impl {
   double startTime = 0.0;
   bool ended = false;
   std::vector<MissionEvent> events;
+  // FNV-1a from this start value (the offset basis with its last digit missing, as since the
+  // first digests): kept so that digests compare with earlier runs.
   uint64_t digest = 1469598103934665603ull;
   long long collisionDeaths = 0;
   uint64_t keyFrameCount = 0;

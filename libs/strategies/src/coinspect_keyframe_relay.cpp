@@ -7,6 +7,7 @@
 #include <mutex>
 #include <unordered_map>
 
+#include "coinspect/core/hash.h"
 #include "coinspect/strategies/runtime/robot_map.h"
 
 namespace coinspect::strategies::coinspect_strategy {
@@ -62,9 +63,7 @@ bool sameFrame(const agent::KeyFrame& a, const agent::KeyFrame& b) {
 class DecodedFrames {
  public:
   agent::KeyFrameView intern(const std::vector<uint8_t>& bytes, agent::KeyFrame decoded) {
-    uint64_t hash = 1469598103934665603ull;  // FNV-1a
-    for (const uint8_t b : bytes)
-      hash = (hash ^ b) * 1099511628211ull;
+    const uint64_t hash = core::fnv1a(bytes.data(), bytes.size());
     const std::lock_guard<std::mutex> lock(mutex_);
     auto& bucket = frames_[hash];
     bucket.erase(std::remove_if(bucket.begin(), bucket.end(),

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "coinspect/core/error.h"
+#include "coinspect/core/hash.h"
 #include "coinspect/core/text.h"
 
 namespace coinspect::world {
@@ -30,10 +31,10 @@ Aabb Scenario::bounds() const {
 
 namespace {
 
-// FNV-1a 64 fed with a fixed little-endian serialisation.
+// FNV-1a 64 (core::fnv1a) fed with a fixed little-endian serialisation.
 class Fnv1a {
  public:
-  void byte(uint8_t b) { hash_ = (hash_ ^ b) * 1099511628211ull; }
+  void byte(uint8_t b) { hash_ = core::fnv1a(&b, 1, hash_); }
   void u32(uint32_t v) {
     for (int i = 0; i < 4; ++i)
       byte(static_cast<uint8_t>(v >> (8 * i)));
@@ -60,7 +61,7 @@ class Fnv1a {
   uint64_t value() const { return hash_; }
 
  private:
-  uint64_t hash_ = 14695981039346656037ull;
+  uint64_t hash_ = core::kFnv1aOffset;
 };
 
 }  // namespace
