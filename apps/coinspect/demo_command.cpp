@@ -1,7 +1,7 @@
-// `coinspect demo`: the main job until missions fly. Loads a scenario, places each photographer's
-// camera at the ideal standoff in front of the interest points (one capture per point not yet
-// counted), scores every capture with the reference's InspectionScorer, merges the photographers'
-// logs at the ground station and prints a summary plus a picture.
+// `coinspect demo`: scores ideal captures without flying. Loads a scenario, places each
+// photographer's camera at the ideal standoff in front of the interest points (one capture per
+// point not yet counted), scores every capture with the reference's InspectionScorer, merges the
+// photographers' logs at the ground station and prints a summary plus a picture.
 //
 // The viewpoints are chosen with full knowledge of the interest points: this is a demonstration
 // of the scorer and an upper-bound reference for strategies, not a strategy (strategies never see
@@ -140,8 +140,8 @@ void runDemo(const DemoOptions& options) {
 
 void addDemoCommand(CLI::App& root) {
   auto options = std::make_shared<DemoOptions>();
-  auto* demo = root.add_subcommand(
-      "demo", "Score ideal camera captures on a scenario and print a summary (the main job)");
+  auto* demo =
+      root.add_subcommand("demo", "Score ideal camera captures on a scenario and print a summary");
   demo->add_option("--scenario", options->scenario, "generator name, scenario.ini or CARIC folder")
       ->capture_default_str();
   demo->add_option("--seed", options->seed, "generator seed")

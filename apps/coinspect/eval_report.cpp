@@ -1,5 +1,6 @@
 #include "eval_report.h"
 
+#include <array>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -14,6 +15,37 @@ void printHistogramRow(std::FILE* out, const char* term, const std::string& who,
   std::fprintf(out, "%-7s %-12s", term, who.c_str());
   for (const uint64_t count : bins)
     std::fprintf(out, " %8llu", static_cast<unsigned long long>(count));
+  std::fputc('\n', out);
+}
+
+// Coverage over time on the terminal: Q and detected points at each tenth of the run (the last
+// improving merge at or before it). Every merge is in coverage.csv with --out.
+void printCoverage(std::FILE* out, const eval::RunEvaluation& r) {
+  constexpr int kTenths = 10;
+  std::array<double, kTenths> score{};
+  std::array<size_t, kTenths> detected{};
+  size_t next = 0;
+  for (int k = 0; k < kTenths; ++k) {
+    const double t = r.endTime * (k + 1) / kTenths;
+    // The last tenth takes every merge: t * 10 / 10 may round below the end time.
+    while (next < r.coverage.size() && (k + 1 == kTenths || r.coverage[next].time <= t))
+      ++next;
+    if (next > 0) {
+      score[k] = r.coverage[next - 1].score;
+      detected[k] = r.coverage[next - 1].detected;
+    }
+  }
+  std::fprintf(out,
+               "\ncoverage at each tenth of the run (with --out, coverage.csv has every merge)\n");
+  std::fprintf(out, "%-9s", "t s");
+  for (int k = 0; k < kTenths; ++k)
+    std::fprintf(out, " %9.1f", r.endTime * (k + 1) / kTenths);
+  std::fprintf(out, "\n%-9s", "Q");
+  for (const double q : score)
+    std::fprintf(out, " %9.3f", q);
+  std::fprintf(out, "\n%-9s", "detected");
+  for (const size_t d : detected)
+    std::fprintf(out, " %9zu", d);
   std::fputc('\n', out);
 }
 
@@ -69,6 +101,7 @@ void printEvaluation(std::FILE* out, const RecordedRun& run, const eval::RunEval
   std::fprintf(out, "speed      %.3f s wall, %.0fx real time\n", timing.wallTime,
                timing.simPerWall());
 
+  printCoverage(out, r);
   std::fprintf(out, "\n%-12s %-12s %9s %9s %10s %9s %8s %9s  %s\n", "unit", "role", "captures",
                "detected", "own Q", "holds GCS", "only it", "LoS s", "state");
   for (const auto& u : r.units) {

@@ -1,8 +1,9 @@
 #!/bin/bash
 # End-to-end: `coinspect run --out` records run.rawlog; `coinspect eval` scores it again, finds
-# the recorded score (exit 0, "equal") and writes eval.json and coverage.csv. A truncated copy of
-# the rawlog is evaluated up to the damage: exit 1, the message names the objects read and the
-# byte offset; so is a copy with a damaged class name, whose message eval.json holds. Usage: eval_test.sh <coinspect> <source dir> <scratch dir>
+# the recorded score (exit 0, "equal"), prints coverage at each tenth of the run and writes
+# eval.json and coverage.csv. A truncated copy of the rawlog is evaluated up to the damage: exit 1,
+# the message names the objects read and the byte offset; so is a copy with a damaged class name,
+# whose message eval.json holds. Usage: eval_test.sh <coinspect> <source dir> <scratch dir>
 set -euo pipefail
 coinspect=$1
 source_dir=$2
@@ -26,6 +27,13 @@ rescored=$(sed -nE 's/^re-scored +Q = ([0-9.]+),.*/\1/p' "$out/eval.log")
 awk -v q="$recorded" 'BEGIN { exit !(q > 0) }' || { echo "Q is 0"; exit 1; }
 grep -Eq '^inspector1 +photographer +[1-9][0-9]* ' "$out/eval.log" ||
   { echo "no unit row for inspector1"; exit 1; }
+# The printed coverage: ten tenths, never falling, ending at the re-scored Q and detected count.
+detected=$(sed -nE 's/^re-scored +Q = [0-9.]+, detected ([0-9]+) .*/\1/p' "$out/eval.log")
+awk -v q="$rescored" -v d="$detected" '
+  $1 == "Q" { n = NF - 1; for (i = 3; i <= NF; ++i) if ($i < $(i - 1)) bad = 1; lastQ = $NF }
+  $1 == "detected" { m = NF - 1; for (i = 3; i <= NF; ++i) if ($i < $(i - 1)) bad = 1; lastD = $NF }
+  END { exit !(n == 10 && m == 10 && !bad && lastQ == sprintf("%.3f", q) && lastD == d) }' \
+  "$out/eval.log" || { echo "bad coverage rows"; exit 1; }
 grep -q '"equal": true' "$out/eval/eval.json" || { echo "eval.json lacks equal: true"; exit 1; }
 head -1 "$out/eval/coverage.csv" | grep -qx 'time,score,detected' || { echo "bad coverage.csv"; exit 1; }
 [[ $(wc -l < "$out/eval/coverage.csv") -gt 1 ]] || { echo "coverage.csv has no sample"; exit 1; }

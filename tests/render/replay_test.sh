@@ -13,9 +13,10 @@ record_short_run "$coinspect" "$source_dir" "$out" 4
 "$coinspect" replay "$out/run/run.rawlog" --fps 2 --size 160x120 --out "$out/overview" \
   > "$out/replay.log" 2> "$out/replay.err"
 cat "$out/replay.log"
-# Events: time, kind, unit, detail; the mission's start and end are among them.
-grep -Eq '^ +[0-9]+\.[0-9]{3} s  start ' "$out/replay.log" || { echo "no start event"; exit 1; }
-grep -Eq '^ +[0-9]+\.[0-9]{3} s  end ' "$out/replay.log" || { echo "no end event"; exit 1; }
+# Events: time, kind, unit, detail, with events.csv's kind names; the mission's start and end
+# are among them.
+grep -Eq '^ +[0-9]+\.[0-9]{3} s  mission-start ' "$out/replay.log" || { echo "no start event"; exit 1; }
+grep -Eq '^ +[0-9]+\.[0-9]{3} s  mission-end ' "$out/replay.log" || { echo "no end event"; exit 1; }
 end=$(sed -nE 's/^frames +[0-9]+ at 2 fps for t = 0 to ([0-9.]+) s .*/\1/p' "$out/replay.log")
 [[ -n $end ]] || { echo "no frames line"; exit 1; }
 expected=$(awk -v t="$end" 'BEGIN { printf "%d", int(t * 2 + 1e-9) + 1 }')

@@ -147,10 +147,10 @@ TEST(Observations, EventRoundTrips) {
 // The numbers are part of the format (the evaluator and old files rely on them): appended only.
 TEST(Observations, EventKindsKeepTheirNumbersAndRoundTrip) {
   const std::vector<std::pair<MissionEventKind, const char*>> kinds = {
-      {MissionEventKind::Start, "start"},
-      {MissionEventKind::End, "end"},
+      {MissionEventKind::Start, "mission-start"},
+      {MissionEventKind::End, "mission-end"},
       {MissionEventKind::Collision, "collision"},
-      {MissionEventKind::Failure, "failure"},
+      {MissionEventKind::Failure, "fault"},
       {MissionEventKind::Death, "death"},
       {MissionEventKind::NoTakeoff, "no-takeoff"},
       {MissionEventKind::BlackoutStart, "blackout-start"},
@@ -252,7 +252,7 @@ TEST(Observations, DescriptionNamesTheContent) {
   o.detail = "battery";
   std::ostringstream text;
   o.getDescriptionAsText(text);
-  EXPECT_NE(text.str().find("failure"), std::string::npos) << text.str();
+  EXPECT_NE(text.str().find("fault"), std::string::npos) << text.str();
   EXPECT_NE(text.str().find("battery"), std::string::npos) << text.str();
 }
 

@@ -266,13 +266,13 @@ void CObservationCoinspectMessages::getDescriptionAsText(std::ostream& o) const 
 const char* toString(MissionEventKind kind) {
   switch (kind) {
     case MissionEventKind::Start:
-      return "start";
+      return "mission-start";
     case MissionEventKind::End:
-      return "end";
+      return "mission-end";
     case MissionEventKind::Collision:
       return "collision";
     case MissionEventKind::Failure:
-      return "failure";
+      return "fault";
     case MissionEventKind::Death:
       return "death";
     case MissionEventKind::NoTakeoff:

@@ -26,27 +26,15 @@ Eigen::Isometry3d bodyPose(const vehicle::VehicleState& state) {
   return pose;
 }
 
-// MissionEvent kinds (mission.cpp) as the rawlog's numbered kinds.
+// MissionEvent kinds (mission.cpp) as the rawlog's numbered kinds, which carry the same names
+// (record::toString), so that events.csv, the rawlog's text and the replay read alike.
 record::MissionEventKind eventKind(const std::string& kind) {
-  using K = record::MissionEventKind;
-  if (kind == "mission-start") return K::Start;
-  if (kind == "mission-end") return K::End;
-  if (kind == "collision") return K::Collision;
-  if (kind == "fault") return K::Failure;
-  if (kind == "death") return K::Death;
-  if (kind == "no-takeoff") return K::NoTakeoff;
-  if (kind == "blackout-start") return K::BlackoutStart;
-  if (kind == "blackout-end") return K::BlackoutEnd;
-  if (kind == "recording-failed") return K::RecordingFailed;
-  if (kind == "feature-detected") return K::FeatureDetected;
-  if (kind == "feature-inspected") return K::FeatureInspected;
-  if (kind == "feature-collected") return K::FeatureCollected;
-  if (kind == "meeting") return K::Meeting;
-  if (kind == "activity-changed") return K::ActivityChanged;
-  if (kind == "charge-start") return K::ChargeStart;
-  if (kind == "charge-end") return K::ChargeEnd;
+  for (int k = 0; k <= static_cast<int>(record::kLastMissionEventKind); ++k) {
+    const auto candidate = static_cast<record::MissionEventKind>(k);
+    if (kind == record::toString(candidate)) return candidate;
+  }
   COINSPECT_ASSERT(!"a mission event kind without a rawlog kind");
-  return K::Failure;
+  return record::MissionEventKind::Failure;
 }
 
 }  // namespace
