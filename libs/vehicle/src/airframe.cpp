@@ -1,6 +1,7 @@
 #include "coinspect/vehicle/airframe.h"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "coinspect/core/config.h"
@@ -10,8 +11,21 @@ namespace coinspect::vehicle {
 namespace {
 
 constexpr double kGravity = 9.81;
+// The model's fastest time constants (attitude_time_constant, mass / drag_coefficient) may not be
+// shorter than this: CVODE's non-stiff method (chosen for speed) then takes ever smaller steps
+// until a mission crawls, or fails (1e-7 s aborted the integration, 3e-7 s ran a 5 s mission for
+// over a minute). Real multirotors are at 0.05 s and more; the shipped airframes at 0.1 s and 10 s
+// or more.
+constexpr double kMinTimeConstant = 0.01;
 constexpr double kDegree = M_PI / 180.0;
 const std::string kSectionPrefix = "airframe.";
+
+// Values as written (std::to_string prints 1e-7 as 0.000000).
+std::string shown(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", value);
+  return text;
+}
 
 // Reads one value and checks low < value < high (or <= when the bound is inclusive), naming the
 // file and the key when it is not.
@@ -21,8 +35,8 @@ double readInRange(const Config& config, const std::string& section, const std::
   const bool aboveLow = lowInclusive ? value >= low : value > low;
   if (!aboveLow || value >= high) {
     throw InputError(config.source(), "[" + section + "] " + key,
-                     std::to_string(value) + " is outside " + (lowInclusive ? "[" : "(") +
-                         std::to_string(low) + ", " + std::to_string(high) + ")");
+                     shown(value) + " is outside " + (lowInclusive ? "[" : "(") + shown(low) +
+                         ", " + shown(high) + ")");
   }
   return value;
 }
@@ -50,7 +64,14 @@ Airframe readAirframe(const Config& config, const std::string& section) {
   }
   a.yawRateLimit = readPositive(config, section, "yaw_rate_limit_deg") * kDegree;
   a.dragCoefficient = readNonNegative(config, section, "drag_coefficient");
-  a.attitudeTimeConstant = readPositive(config, section, "attitude_time_constant");
+  a.attitudeTimeConstant =
+      readInRange(config, section, "attitude_time_constant", kMinTimeConstant, true, HUGE_VAL);
+  if (a.dragCoefficient * kMinTimeConstant > a.mass) {
+    throw InputError(config.source(), "[" + section + "] drag_coefficient",
+                     shown(a.dragCoefficient) + " N per m/s on " + shown(a.mass) +
+                         " kg: the velocity's time constant (mass / drag_coefficient) is under "
+                         "0.01 s; at most 100 N per m/s per kg");
+  }
   a.tiltRateLimit = readPositive(config, section, "tilt_rate_limit_deg") * kDegree;
   a.gains.wXY = readPositive(config, section, "w_xy");
   a.gains.wZ = readPositive(config, section, "w_z");
@@ -86,8 +107,10 @@ void validateAirframe(const Airframe& a, const std::string& source) {
           source, where + "minThrustAccel/maxThrustAccel", "must satisfy 0 <= min < g < max");
   require(finitePositive(a.yawRateLimit), source, where + "yawRateLimit", "must be > 0");
   require(finiteNonNegative(a.dragCoefficient), source, where + "dragCoefficient", "must be >= 0");
-  require(finitePositive(a.attitudeTimeConstant), source, where + "attitudeTimeConstant",
-          "must be > 0 s");
+  require(std::isfinite(a.attitudeTimeConstant) && a.attitudeTimeConstant >= kMinTimeConstant,
+          source, where + "attitudeTimeConstant", "must be >= 0.01 s");
+  require(a.dragCoefficient * kMinTimeConstant <= a.mass, source, where + "dragCoefficient",
+          "mass / dragCoefficient must be >= 0.01 s");
   require(finitePositive(a.tiltRateLimit), source, where + "tiltRateLimit", "must be > 0");
   const ControllerGains& g = a.gains;
   require(finitePositive(g.wXY) && finitePositive(g.wZ) && finitePositive(g.zetaXY) &&

@@ -4,6 +4,7 @@
 #include <nvector/nvector_serial.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include <stdexcept>
 #include <string>
 
 #include "coinspect/core/error.h"
@@ -67,7 +68,13 @@ class CvodeStepper : public OdeStepper {
   void advanceTo(const RigidBodyModel& model, double t, StateVector& y) override {
     data_.model = &model;
     sunrealtype reached = t0_;
-    check(CVode(memory_, t, y_, &reached, CV_NORMAL), "CVode");
+    // Not an assertion: airframe values (a time constant far below the step) can make the model
+    // too stiff for this non-stiff method, and the caller names the airframe.
+    const int flag = CVode(memory_, t, y_, &reached, CV_NORMAL);
+    if (flag < 0)
+      throw std::runtime_error("CVODE could not integrate from t = " + std::to_string(reached) +
+                               " s to " + std::to_string(t) + " s (" +
+                               CVodeGetReturnFlagName(flag) + ")");
     const double* values = N_VGetArrayPointer(y_);
     std::copy(values, values + kStateSize, y.begin());
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "coinspect/core/error.h"
 #include "ode_stepper.h"
@@ -100,7 +101,13 @@ void Multirotor::integrateTo(double t) {
   }
   const RigidBodyModel model{&airframe_, data_.input, data_.grounded};
   StateVector y;
-  stepper_->advanceTo(model, t, y);
+  try {
+    stepper_->advanceTo(model, t, y);
+  } catch (const std::runtime_error& error) {
+    throw std::runtime_error("airframe '" + airframe_.name + "': " + error.what() +
+                             "; its time constants (attitude_time_constant, mass / "
+                             "drag_coefficient) may be too small for the integrator");
+  }
   std::copy(y.begin(), y.end(), data_.state);
   data_.time = t;
   if (!data_.grounded && data_.state[kPz] < groundZ_) {

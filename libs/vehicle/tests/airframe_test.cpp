@@ -81,6 +81,28 @@ TEST(Airframes, MissingKeyAndBadTiltAreRejected) {
                   "[airframe.photographer] tilt_limit_deg");
 }
 
+// A time constant far under the integration step made the non-stiff integrator fail (an abort,
+// once) or crawl: such files are refused, naming the key.
+TEST(Airframes, TimeConstantsUnderTenMillisecondsAreRejected) {
+  const auto attitude =
+      writeVariant("attitude", replaced(shippedText(), "attitude_time_constant = 0.1",
+                                        "attitude_time_constant = 0.0000001"));
+  const std::string message = messageOf([&] { loadAirframes(attitude); });
+  EXPECT_MENTIONS(message, attitude.string());
+  EXPECT_MENTIONS(message, "[airframe.explorer] attitude_time_constant");
+  const auto drag = writeVariant(
+      "drag", replaced(shippedText(), "drag_coefficient = 0.15", "drag_coefficient = 151"));
+  EXPECT_MENTIONS(messageOf([&] { loadAirframes(drag); }),
+                  "[airframe.photographer] drag_coefficient");
+  // At the bound itself (1.5 kg / 150 N per m/s = 0.01 s) the file loads.
+  const auto atBound = writeVariant(
+      "bound", replaced(shippedText(), "drag_coefficient = 0.15", "drag_coefficient = 150"));
+  EXPECT_EQ(loadAirframes(atBound).at("photographer").dragCoefficient, 150.0);
+  Airframe tooFast;
+  tooFast.attitudeTimeConstant = 0.001;
+  EXPECT_THROW(validateAirframe(tooFast, "test"), InputError);
+}
+
 TEST(Airframes, ForeignSectionIsRejected) {
   const auto path = writeVariant("section", shippedText() + "\n[camera]\nfov = 1\n");
   EXPECT_MENTIONS(messageOf([&] { loadAirframes(path); }), "[camera]");
