@@ -30,6 +30,7 @@ constexpr int kStatusDifferent = 3;
 void evaluateRecordedRun(const EvalOptions& options) {
   const RecordedRun run = openRecordedRun(options.rawlog, options.scenario);
   record::RawlogReader reader(run.rawlog);
+  reader.setLatestTime(run.latestTime());
   eval::EvaluationParams params;
   params.scoring = run.mission.scoring;
   params.physicsStep = run.mission.physicsStep;

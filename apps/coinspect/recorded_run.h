@@ -17,6 +17,12 @@ struct RecordedRun {
   record::RunHeader header;
   sim::MissionConfig mission;  // the header's config, read as `coinspect run` read it
   world::Scenario scenario;
+
+  // The latest mission time an object of this run can carry: the mission clock starts by
+  // start_timeout at the latest and runs for the budget; 1 s more for the last tick's records.
+  double latestTime() const {
+    return mission.startTimeout + mission.budget.value_or(scenario.missionBudget) + 1.0;
+  }
 };
 
 // Reads the header of `rawlog` and builds its scenario: from `scenarioSource` (a SOURCE as in

@@ -27,7 +27,7 @@ constexpr int kStatusDamaged = 1;
 void renderRecordedRun(const RenderOptions& options) {
   const PictureSize size = parsePictureSize(options.size, "--size");
   const RecordedRun run = openRecordedRun(options.rawlog, options.scenario);
-  const eval::RunTracks tracks = eval::readRunTracks(run.rawlog);
+  const eval::RunTracks tracks = eval::readRunTracks(run.rawlog, run.latestTime());
   const std::filesystem::path folder =
       options.out.empty() ? run.rawlog.parent_path() : std::filesystem::path(options.out);
   const auto paths = eval::writeRunPictures(run.scenario, tracks, folder.empty() ? "." : folder,

@@ -52,7 +52,7 @@ void tallyAt(const eval::RunTracks& tracks, double t, double& score, uint64_t& d
 void replayRecordedRun(const ReplayOptions& options) {
   const PictureSize size = parsePictureSize(options.size, "--size");
   const RecordedRun run = openRecordedRun(options.rawlog, options.scenario);
-  const eval::RunTracks tracks = eval::readRunTracks(run.rawlog);
+  const eval::RunTracks tracks = eval::readRunTracks(run.rawlog, run.latestTime());
   const eval::CameraView view = eval::parseCameraView(options.view, tracks, "--view");
   const std::filesystem::path folder =
       (options.out.empty() ? run.rawlog.parent_path() : std::filesystem::path(options.out)) /

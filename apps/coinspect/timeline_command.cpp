@@ -62,19 +62,26 @@ void plotTimeline(const PlotTimelineOptions& options) {
   const PictureSize size = parsePictureSize(options.size, "--size");
   const std::filesystem::path rawlog = rawlogOf(options.run);
   const eval::RunTracks tracks = eval::readRunTracks(rawlog);
-  const eval::StatusTimeline timeline = eval::statusTimeline(tracks, rawlog.string());
+  const auto reportDamage = [&](const char* what) {
+    std::fprintf(stderr, "coinspect: rawlog damaged, %s: %s\n", what,
+                 tracks.status.message.c_str());
+    throw CommandStatus{kStatusDamaged};
+  };
+  eval::StatusTimeline timeline;
+  try {
+    timeline = eval::statusTimeline(tracks, rawlog.string());
+  } catch (const InputError&) {
+    // Cut before its first activity event, a feature run reads as another kind: say why.
+    if (!tracks.status.clean) reportDamage("no timeline before the damage");
+    throw;
+  }
   const std::filesystem::path out(options.out);
   createParentFolder(out);
   eval::writePng(
       eval::renderStatusTimeline(timeline, titleOf(tracks, rawlog), size.width, size.height), out);
   std::printf("%s\n", out.string().c_str());
   std::fflush(stdout);
-  if (!tracks.status.clean) {
-    std::fprintf(stderr,
-                 "coinspect: rawlog damaged, the timeline shows the run up to the damage: %s\n",
-                 tracks.status.message.c_str());
-    throw CommandStatus{kStatusDamaged};
-  }
+  if (!tracks.status.clean) reportDamage("the timeline shows the run up to the damage");
 }
 
 }  // namespace

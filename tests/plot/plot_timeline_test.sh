@@ -1,7 +1,8 @@
 #!/bin/bash
 # End-to-end: `coinspect plot-timeline`. PART picture: a short SLEI3D feature mission records an
 # activity for every unit; its run folder (and its run.rawlog given directly) makes one PNG of the
-# requested size, the same bytes twice; a truncated copy of the rawlog still draws, with exit 1.
+# requested size, the same bytes twice; a truncated copy of the rawlog still draws, with exit 1,
+# and one cut before any activity event reports the damage (exit 1).
 # PART errors (no mission flown): a missing run, a folder without run.rawlog, a file that is not
 # a rawlog, a CARIC run (no activity events) and bad sizes exit 2 naming the file or the option
 # and write no picture.
@@ -50,6 +51,19 @@ case $part in
     [[ $status -eq 1 ]] || { echo "damaged rawlog: exit status $status, expected 1"; exit 1; }
     grep -q "rawlog damaged" "$out/cut.err" || { echo "damage not reported"; exit 1; }
     check_png "$out/cut.png" 320 200
+    # Cut before its first activity event: the damage is reported (it once read as "not the
+    # rawlog of a feature mission", exit 2), exit 1, no picture.
+    head -c 10000 "$out/run/run.rawlog" > "$out/early.rawlog"
+    set +e
+    "$coinspect" plot-timeline --out "$out/early.png" "$out/early.rawlog" > /dev/null \
+      2> "$out/early.err"
+    status=$?
+    set -e
+    cat "$out/early.err"
+    [[ $status -eq 1 ]] || { echo "early cut: exit status $status, expected 1"; exit 1; }
+    grep -q "rawlog damaged, no timeline before the damage: .*early.rawlog: [0-9]* objects read, damage at byte offset" \
+      "$out/early.err" || { echo "early damage not reported"; exit 1; }
+    [[ ! -e $out/early.png ]] || { echo "a picture of nothing was written"; exit 1; }
     ;;
   errors)
     caric_run="$source_dir/datasets/runs/hangar-strict"

@@ -32,8 +32,9 @@ int RunTracks::unitIndex(const std::string& name) const {
   return -1;
 }
 
-RunTracks readRunTracks(const std::filesystem::path& rawlog) {
+RunTracks readRunTracks(const std::filesystem::path& rawlog, double latestTime) {
   record::RawlogReader reader(rawlog);
+  reader.setLatestTime(latestTime);
   RunTracks tracks;
   tracks.header = reader.header();
   std::map<std::string, size_t> unitByName;
@@ -48,18 +49,25 @@ RunTracks readRunTracks(const std::filesystem::path& rawlog) {
       auto [it, added] = unitByName.emplace(name, tracks.units.size());
       if (added) tracks.units.push_back(UnitTrack{name, {}, std::nullopt, {}});
       const auto& mean = pose->pose.mean;
+      // The pictures fit their view to the poses: an infinite one broke MRPT's projection.
+      for (const double value :
+           {mean.x(), mean.y(), mean.z(), mean.yaw(), mean.pitch(), mean.roll()})
+        if (!std::isfinite(value))
+          throw InputError(rawlog.string(), pose->sensorLabel + " at t = " + std::to_string(time),
+                           "the pose is not finite");
       tracks.units[it->second].poses.push_back(PoseSample{
           time, world::Vec3(mean.x(), mean.y(), mean.z()), mean.yaw(), mean.pitch(), mean.roll()});
     } else if (const auto* tally =
                    dynamic_cast<const record::CObservationCoinspectTally*>(observation.get())) {
-      if (tracks.finalValues.size() < tally->pointCount)
-        tracks.finalValues.resize(tally->pointCount, 0.0);
       tracks.pointCount = std::max<uint64_t>(tracks.pointCount, tally->pointCount);
       for (const auto& change : tally->changes) {
-        if (change.index >= tracks.finalValues.size())
+        if (change.index >= tracks.pointCount)
           throw InputError(rawlog.string(), "gcs.tally at t = " + std::to_string(time),
                            "point index " + std::to_string(change.index) +
                                " beyond the point count " + std::to_string(tally->pointCount));
+        // Grown to the indices met, not to the recorded count: a damaged count asked for 10^12.
+        if (tracks.finalValues.size() <= change.index)
+          tracks.finalValues.resize(change.index + 1, 0.0);
         tracks.finalValues[change.index] = change.value;
         tracks.tallyChanges.push_back(TallyChange{time, change.index, change.value});
       }

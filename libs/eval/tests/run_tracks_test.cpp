@@ -2,9 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "coinspect/core/error.h"
 #include "coinspect/record/observations.h"
+#include "coinspect/record/rawlog_writer.h"
 #include "coinspect/testing/files.h"
+#include "coinspect/testing/input_errors.h"
 #include "coinspect/testing/paths.h"
 #include "picture_run.h"
 
@@ -37,7 +41,7 @@ TEST(RunTracks, ReadsPosesTallyAndEventsOfARun) {
   EXPECT_DOUBLE_EQ(tracks.finalScore(), 1.75);
   EXPECT_EQ(tracks.finalDetected(), 3u);
   EXPECT_EQ(tracks.pointCount, 12u);
-  ASSERT_EQ(tracks.finalValues.size(), 12u);
+  ASSERT_EQ(tracks.finalValues.size(), 11u);  // up to point 10, the highest changed
   EXPECT_DOUBLE_EQ(tracks.finalValues[4], 1.0);
   EXPECT_DOUBLE_EQ(tracks.finalValues[0], 0.5);
   EXPECT_DOUBLE_EQ(tracks.finalValues[10], 0.25);
@@ -69,6 +73,33 @@ TEST(RunTracks, ADamagedRawlogIsReadUpToTheDamage) {
   EXPECT_GT(tracks.units[1].poses.size(), 10u);
   EXPECT_LT(tracks.units[1].poses.size(), 241u);
   EXPECT_EQ(tracks.objects, tracks.status.objects);
+}
+
+// Found by fuzzing the pictures: an infinite pose broke MRPT's projection with a raw MRPT
+// exception, and a tally whose point count read 10^12 ran out of memory.
+TEST(RunTracks, AnInfinitePoseIsAnInputErrorAndAHugePointCountAllocatesNothing) {
+  const auto dir = testing::scratchDir("run_tracks_values");
+  const auto write = [&](const std::string& name, double x, uint64_t pointCount) {
+    record::RawlogWriter writer(dir / name, record::RunHeader{"0.1.0", 1, "00", ""}, 1.0);
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    writer.writeGroundTruth("alpha", 0.0, pose, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+    pose.translation().x() = x;
+    writer.writeGroundTruth("alpha", 0.05, pose, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+    writer.writeTally(0.05, {{3, 0.5}}, 1, pointCount, 0.5);
+    writer.close();
+    return dir / name;
+  };
+  const auto infinite = write("inf.rawlog", std::numeric_limits<double>::infinity(), 10);
+  const std::string message = testing::messageOf([&] { readRunTracks(infinite); });
+  EXPECT_MENTIONS(message, "inf.rawlog");
+  EXPECT_MENTIONS(message, "alpha.pose at t = 0.05");
+  EXPECT_MENTIONS(message, "the pose is not finite");
+
+  const RunTracks huge = readRunTracks(write("huge.rawlog", 1.0, 1000000000000ull));
+  EXPECT_TRUE(huge.status.clean);
+  EXPECT_EQ(huge.pointCount, 1000000000000ull);
+  ASSERT_EQ(huge.finalValues.size(), 4u);
+  EXPECT_DOUBLE_EQ(huge.finalValues[3], 0.5);
 }
 
 TEST(RunTracks, AFileThatIsNotARawlogIsAnInputError) {

@@ -5,6 +5,8 @@
 #include <mrpt/obs/CObservationComment.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <cstdio>
+#include <limits>
 #include <sstream>
 
 #include "coinspect/core/error.h"
@@ -34,7 +36,9 @@ std::string shortReason(const std::string& what) {
 }  // namespace
 
 RawlogReader::RawlogReader(const std::filesystem::path& path)
-    : path_(path), in_(std::make_unique<detail::GzipInput>(path.string())) {
+    : path_(path),
+      in_(std::make_unique<detail::GzipInput>(path.string())),
+      latestTime_(std::numeric_limits<double>::infinity()) {
   if (!in_->isOpen()) throw InputError(path_.string(), "open", "cannot open the rawlog");
   std::error_code error;
   if (std::filesystem::file_size(path_, error) == 0 && !error)
@@ -99,8 +103,38 @@ bool RawlogReader::next(std::shared_ptr<mrpt::obs::CObservation>& observation) {
     observation.reset();
     return false;
   }
+  // A timestamp flipped by damage still deserializes; the readers downstream trust the order
+  // (one 0xFF.. time once made a replay write frames until the disk was full).
+  const std::string timeFault = timestampFault(mrpt::Clock::toDouble(observation->timestamp));
+  if (!timeFault.empty()) {
+    finished_ = true;
+    markDamaged(start, observation->sensorLabel + ": " + timeFault);
+    observation.reset();
+    return false;
+  }
   ++status_.objects;
   return true;
+}
+
+std::string RawlogReader::timestampFault(double time) {
+  // MRPT's clock counts unsigned 100 ns ticks: a damaged time is never negative or NaN, but may
+  // be anything up to 58,000 years.
+  char text[160];
+  if (time < previousTime_) {
+    std::snprintf(text, sizeof(text),
+                  "timestamp %.6f s comes before the previous object's %.6f s (objects are "
+                  "written in time order)",
+                  time, previousTime_);
+    return text;
+  }
+  if (time > latestTime_) {
+    std::snprintf(text, sizeof(text),
+                  "timestamp %.6f s is after the latest time the run can reach, %.6f s", time,
+                  latestTime_);
+    return text;
+  }
+  previousTime_ = time;
+  return "";
 }
 
 }  // namespace coinspect::record

@@ -1,6 +1,7 @@
 // Rawlog writing and reading: round trip in order, identical bytes for identical inputs,
 // truncated and corrupted files read up to the damage, SIGKILL recovery, I/O errors at once.
 #include <gtest/gtest.h>
+
 #include <mrpt/core/Clock.h>
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/maps/CSimplePointsMap.h>
@@ -12,6 +13,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include <zlib.h>
+#include <limits>
 
 #include <vector>
 
@@ -33,8 +35,10 @@ struct ReadResult {
   ReadStatus status;
 };
 
-ReadResult readAll(const std::filesystem::path& path) {
+ReadResult readAll(const std::filesystem::path& path,
+                   double latestTime = std::numeric_limits<double>::infinity()) {
   RawlogReader reader(path);
+  reader.setLatestTime(latestTime);
   ReadResult result;
   Observation o;
   while (reader.next(o))
@@ -231,6 +235,37 @@ TEST(Rawlog, CorruptedFileStopsWithAMessageInsteadOfCrashing) {
   EXPECT_FALSE(part.status.clean);
   EXPECT_LT(part.objects.size(), 15u);
   EXPECT_MENTIONS(part.status.message, "objects read, damage at byte offset");
+}
+
+// A timestamp damaged into another readable value (fuzzing: one 0xFF.. time made `coinspect
+// replay` write frames until the disk was full, and eval called the file clean) is damage at that
+// object: out of order, or past the run's latest time.
+TEST(Rawlog, ImpossibleTimestampsAreDamageAtTheirObject) {
+  const auto dir = testing::scratchDir("rawlog_timestamps");
+  const auto write = [&](const std::string& name, std::vector<double> times) {
+    RawlogWriter writer(dir / name, sample::sampleHeader(), 1.0);
+    for (const double t : times)
+      writer.writeEvent(t, MissionEventKind::Meeting, "jurong", "raffles");
+    writer.close();
+    return dir / name;
+  };
+  const auto inOrder = readAll(write("order.rawlog", {0.5, 1.0, 1.0, 2.0}), 3.0);
+  EXPECT_TRUE(inOrder.status.clean) << inOrder.status.message;
+  EXPECT_EQ(inOrder.objects.size(), 4u);
+
+  const auto backwards = readAll(write("back.rawlog", {0.5, 1.0, 0.75, 2.0}));
+  EXPECT_FALSE(backwards.status.clean);
+  EXPECT_EQ(backwards.objects.size(), 2u);
+  EXPECT_MENTIONS(backwards.status.message, "3 objects read, damage at byte offset");
+  EXPECT_MENTIONS(
+      backwards.status.message,
+      "jurong.event: timestamp 0.750000 s comes before the previous object's 1.000000 s");
+
+  const auto late = readAll(write("late.rawlog", {0.5, 1.0, 1e6}), 3.0);
+  EXPECT_FALSE(late.status.clean);
+  EXPECT_EQ(late.objects.size(), 2u);
+  EXPECT_MENTIONS(late.status.message, "after the latest time the run can reach, 3.000000 s");
+  EXPECT_TRUE(readAll(dir / "late.rawlog").status.clean);  // no bound set: in order is enough
 }
 
 // A damaged class name reaches MRPT's exception message byte for byte. The status message must

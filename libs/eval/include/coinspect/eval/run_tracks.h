@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -62,7 +63,9 @@ struct RunTracks {
   std::vector<TallySample> tally;
   std::vector<TallyChange> tallyChanges;  // every improvement, in time order (for replays)
   uint64_t pointCount = 0;                // as the tally records say (0 without any)
-  std::vector<double> finalValues;        // per point index: the last value the GCS held
+  // Per point index, the last value the GCS held, up to the highest index any tally changed
+  // (the points after it held 0).
+  std::vector<double> finalValues;
   std::vector<RunEvent> events;
   double endTime = 0.0;       // latest timestamp of any object read (s)
   uint64_t objects = 0;       // objects read, header comment included
@@ -76,17 +79,20 @@ struct RunTracks {
 };
 
 // Reads `rawlog` up to its end or its damage (then status.clean is false and status.message says
-// where; the tracks hold everything before it). Throws InputError when the file cannot be
-// opened or has no coinspect run header, or when a tally names a point beyond its point count.
-RunTracks readRunTracks(const std::filesystem::path& rawlog);
+// where; the tracks hold everything before it; an object later than `latestTime` (s) is damage,
+// record::RawlogReader::setLatestTime). Throws InputError when the file cannot be opened or has
+// no coinspect run header, when a tally names a point beyond its point count, or when a pose is
+// not finite.
+RunTracks readRunTracks(const std::filesystem::path& rawlog,
+                        double latestTime = std::numeric_limits<double>::infinity());
 
 // The pose of `track` at time t: linear between samples (yaw the short way round), the first
 // sample before it, the last after it. The track must not be empty.
 PoseSample poseAt(const UnitTrack& track, double t);
 
-// "start", "end", "collision", ... (record::toString).
+// "mission-start", "mission-end", "collision", ... (record::toString: events.csv's names).
 std::string eventKindName(record::MissionEventKind kind);
-// True for the events after which a unit no longer flies (collision, failure, death).
+// True for the events after which a unit no longer flies (collision, fault, death).
 bool isDeathEvent(record::MissionEventKind kind);
 
 }  // namespace coinspect::eval

@@ -1,6 +1,8 @@
 // RawlogReader: reads a coinspect rawlog back one observation at a time (constant memory).
 // A truncated or corrupted file is read up to the damage; then next() returns false and
-// status() says how many objects were read and at which byte offset the damage starts.
+// status() says how many objects were read and at which byte offset the damage starts. Damage
+// includes a readable object with an impossible timestamp: earlier than the object before it
+// (the writer writes in time order) or later than setLatestTime's bound.
 #pragma once
 
 #include <cstdint>
@@ -47,15 +49,24 @@ class RawlogReader {
 
   const ReadStatus& status() const { return status_; }
 
+  // The latest mission time (s) an object of this run can carry (the caller knows it from the
+  // recorded config: start_timeout + budget, and a margin); later ones are damage. Without it,
+  // any finite time in order is accepted.
+  void setLatestTime(double seconds) { latestTime_ = seconds; }
+
  private:
   std::shared_ptr<mrpt::obs::CObservation> readObject();
   void markDamaged(uint64_t offset, const std::string& why);
+  // "" when `time` may follow the objects read so far (and then it becomes the previous time).
+  std::string timestampFault(double time);
 
   std::filesystem::path path_;
   std::unique_ptr<detail::GzipInput> in_;
   RunHeader header_;
   ReadStatus status_;
   bool finished_ = false;
+  double latestTime_;
+  double previousTime_ = 0.0;
 };
 
 }  // namespace coinspect::record
