@@ -25,8 +25,10 @@ RecordedRun openRecordedRun(const std::filesystem::path& rawlog,
   run.rawlog = rawlog;
   run.header = record::RawlogReader(rawlog).header();
   // The recorded config is read as the run read it, with the recorded seed (it may have come
-  // from --seed rather than the file).
-  const auto config = Config::fromText(run.header.configIni, rawlog.string() + " (run header)");
+  // from --seed rather than the file), its relative paths from the rawlog's folder (the run
+  // recorded them so: makeRunHeader).
+  const auto config = Config::fromText(run.header.configIni, rawlog.string() + " (run header)",
+                                       rawlog.parent_path());
   run.mission = sim::MissionConfig::read(config, run.header.seed);
   try {
     run.scenario = scenarioSource.empty()

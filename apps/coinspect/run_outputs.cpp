@@ -11,6 +11,7 @@
 #include "coinspect/core/version.h"
 #include "coinspect/record/run_report.h"
 #include "coinspect/record/score_csv.h"
+#include "coinspect/world/scenario_source.h"
 
 namespace coinspect::app {
 
@@ -132,7 +133,8 @@ record::RunReport makeReport(const sim::MissionSummary& s, const Config& ini,
 
 }  // namespace
 
-record::RunHeader makeRunHeader(const sim::Mission& mission, const Config& ini) {
+record::RunHeader makeRunHeader(const sim::Mission& mission, const Config& ini,
+                                const std::filesystem::path& runFolder) {
   record::RunHeader header;
   header.coinspectVersion = coinspect::version();
   header.seed = mission.config().seed;
@@ -140,6 +142,23 @@ record::RunHeader makeRunHeader(const sim::Mission& mission, const Config& ini) 
   std::snprintf(hash, sizeof hash, "%016" PRIx64, mission.scenario().contentHash());
   header.scenarioHash = hash;
   header.configIni = ini.toText();
+  // The recorded config is read back with the rawlog's folder as its own (openRecordedRun): a
+  // relative path written for the INI's folder (config/caric-mbs.ini's ../../shared/...) is
+  // recorded relative to the run folder instead. Generator names and absolute paths stay.
+  Config recorded = Config::fromText(header.configIni, ini.source());
+  bool rewritten = false;
+  for (const char* key : {"scenario", "airframes", "lidars"}) {
+    const std::string written = ini.getString("mission", key, "");
+    if (written.empty() || !std::filesystem::path(written).is_relative() ||
+        (std::string(key) == "scenario" && world::isGeneratorName(written)))
+      continue;
+    std::error_code error;
+    const auto fromRun = std::filesystem::relative(ini.folder() / written, runFolder, error);
+    if (error || fromRun.empty()) continue;
+    recorded.set("mission", key, fromRun.string());
+    rewritten = true;
+  }
+  if (rewritten) header.configIni = recorded.toText();
   return header;
 }
 
@@ -158,7 +177,7 @@ RunOutputs::RunOutputs(sim::Mission& mission, std::filesystem::path folder, cons
     }
   });
   if (mission.config().record.rawlog)
-    mission.startRecording(folder_ / "run.rawlog", makeRunHeader(mission, ini));
+    mission.startRecording(folder_ / "run.rawlog", makeRunHeader(mission, ini, folder_));
 }
 
 void RunOutputs::finish(const sim::Mission& mission, const Config& ini,

@@ -15,15 +15,18 @@
 namespace coinspect::app {
 
 // The run header of a rawlog: this build's version, the run's seed, the scenario's content
-// hash (16 lowercase hex digits) and the resolved config (after --set) as INI text.
-record::RunHeader makeRunHeader(const sim::Mission& mission, const Config& ini);
+// hash (16 lowercase hex digits) and the resolved config (after --set) as INI text, with the
+// [mission] scenario, airframes and lidars paths that were relative to the INI's folder made
+// relative to `runFolder`, where the rawlog is (eval, render and replay read them from there).
+record::RunHeader makeRunHeader(const sim::Mission& mission, const Config& ini,
+                                const std::filesystem::path& runFolder);
 
 class RunOutputs {
  public:
   // Creates `folder` (InputError naming it when that fails) and one <unit>.tum per unit, hooks
   // the writers to the mission's controller tick (20 Hz of simulated time) and, unless
   // [record] rawlog = false, starts recording to folder/run.rawlog with the header of
-  // makeRunHeader(mission, ini). Call before the mission's first step.
+  // makeRunHeader(mission, ini, folder). Call before the mission's first step.
   RunOutputs(sim::Mission& mission, std::filesystem::path folder, const Config& ini);
   // Writes the end-of-run files. `ini` is the resolved config, `configFile` its path.
   void finish(const sim::Mission& mission, const Config& ini, const std::string& configFile,

@@ -3,7 +3,8 @@
 # the recorded score (exit 0, "equal"), prints coverage at each tenth of the run and writes
 # eval.json and coverage.csv. A truncated copy of the rawlog is evaluated up to the damage: exit 1,
 # the message names the objects read and the byte offset; so is a copy with a damaged class name,
-# whose message eval.json holds. Usage: eval_test.sh <coinspect> <source dir> <scratch dir>
+# whose message eval.json holds. A run of a scenario folder named relative to its INI evaluates
+# from another folder. Usage: eval_test.sh <coinspect> <source dir> <scratch dir>
 set -euo pipefail
 coinspect=$1
 source_dir=$2
@@ -37,6 +38,20 @@ awk -v q="$rescored" -v d="$detected" '
 grep -q '"equal": true' "$out/eval/eval.json" || { echo "eval.json lacks equal: true"; exit 1; }
 head -1 "$out/eval/coverage.csv" | grep -qx 'time,score,detected' || { echo "bad coverage.csv"; exit 1; }
 [[ $(wc -l < "$out/eval/coverage.csv") -gt 1 ]] || { echo "coverage.csv has no sample"; exit 1; }
+
+# A scenario folder given relative to its INI (as config/caric-mbs.ini does), recorded into a
+# folder at another depth: eval finds it from the rawlog (it once resolved the INI's relative
+# path from the rawlog's folder and found nothing).
+"$coinspect" scenario generate slei-b --out "$out/scene/slei-b" > /dev/null
+mkdir -p "$out/ini"
+sed 's|^scenario = slei-b$|scenario = ../scene/slei-b|' "$source_dir/config/quick.ini" > "$out/ini/quick.ini"
+grep -q '^scenario = ../scene/slei-b$' "$out/ini/quick.ini" || { echo "scenario not replaced"; exit 1; }
+"$coinspect" run "$out/ini/quick.ini" --set mission.budget=3 --quiet --out "$out/a/b/folder-run" \
+  > /dev/null
+"$coinspect" eval "$out/a/b/folder-run/run.rawlog" > "$out/folder-eval.log" 2> /dev/null ||
+  { cat "$out/folder-eval.log"; echo "eval of a folder-scenario run failed"; exit 1; }
+grep -Eq '^re-scored +Q = [0-9.]+, detected [0-9]+ / 150: equal$' "$out/folder-eval.log" ||
+  { echo "folder-scenario run: no 'equal' line"; exit 1; }
 
 # A truncated copy: results up to the damage, exit 1, the reader's message on stderr.
 size=$(stat -c %s "$out/run/run.rawlog")

@@ -3,7 +3,9 @@
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <utility>
 
 #include "coinspect/core/error.h"
 #include "coinspect/core/text.h"
@@ -24,29 +26,47 @@ Config Config::fromFile(const std::filesystem::path& path) {
   if (!in) throw InputError(path.string(), "", "cannot open configuration file");
   std::ostringstream text;
   text << in.rdbuf();
-  Config config = fromText(text.str(), path.string());
-  config.folder_ = path.parent_path();
-  return config;
+  return fromText(text.str(), path.string(), path.parent_path());
 }
 
-Config Config::fromText(const std::string& text, const std::string& source) {
+Config Config::fromText(const std::string& text, const std::string& source,
+                        const std::filesystem::path& folder) {
   Config config;
   config.source_ = source;
-  // Reject lines the INI parser would silently drop, so that typos surface.
+  config.folder_ = folder;
+  // Reject lines the INI parser would silently drop or merge, so that typos surface: a key or
+  // a section given twice would let the last value win unseen (found by fuzzing).
   std::istringstream lines(text);
   std::string line;
+  std::string section;
+  std::map<std::string, int> sectionLines;                      // lowercase name -> first line
+  std::map<std::pair<std::string, std::string>, int> keyLines;  // lowercase -> first line
+
   for (int number = 1; std::getline(lines, line); ++number) {
     const auto content = trim(line);
+    const std::string where = "line " + std::to_string(number);
     if (content.empty() || content.front() == ';' || content.front() == '#') continue;
     if (content.front() == '[') {
       if (content.back() != ']' || content.size() < 3)
-        throw InputError(source, "line " + std::to_string(number),
-                         "malformed section header '" + std::string(content) + "'");
+        throw InputError(source, where, "malformed section header '" + std::string(content) + "'");
+      section = std::string(trim(content.substr(1, content.size() - 2)));
+      const auto [at, added] = sectionLines.emplace(toLower(section), number);
+      if (!added)
+        throw InputError(source, where,
+                         "section [" + section + "] given twice (first on line " +
+                             std::to_string(at->second) + "): write its keys in one");
       continue;
     }
-    if (content.find('=') == std::string_view::npos)
-      throw InputError(source, "line " + std::to_string(number),
-                       "expected 'key = value', got '" + std::string(content) + "'");
+    const auto equals = content.find('=');
+    if (equals == std::string_view::npos)
+      throw InputError(source, where, "expected 'key = value', got '" + std::string(content) + "'");
+    const std::string key(trim(content.substr(0, equals)));
+    const auto [at, added] =
+        keyLines.emplace(std::make_pair(toLower(section), toLower(key)), number);
+    if (!added)
+      throw InputError(source, where,
+                       "[" + section + "] " + key + " given twice (first on line " +
+                           std::to_string(at->second) + ")");
   }
   config.impl_->ini.setContent(text);
   return config;

@@ -52,6 +52,23 @@ TEST(Config, LinesWithoutAssignmentAreRejectedWithTheirLineNumber) {
   EXPECT_NE(message.find("f.ini: line 3"), std::string::npos) << message;
 }
 
+// The INI parser merges a repeated section and lets a repeated key's last value win, unseen
+// (fuzzing: `budget = 5` then `budget = 7` flew 7 s). Both are errors naming both lines.
+TEST(Config, KeysAndSectionsGivenTwiceAreRejectedWithBothLines) {
+  const auto key = messageOf(
+      [] { Config::fromText("[mission]\nbudget = 5\nscenario = x\nbudget = 7\n", "d.ini"); });
+  EXPECT_NE(key.find("d.ini: line 4"), std::string::npos) << key;
+  EXPECT_NE(key.find("[mission] budget given twice (first on line 2)"), std::string::npos) << key;
+  const auto section = messageOf([] {
+    Config::fromText("[mission]\nbudget = 5\n[strategy]\nname = a\n[ mission ]\n", "s.ini");
+  });
+  EXPECT_NE(section.find("s.ini: line 5"), std::string::npos) << section;
+  EXPECT_NE(section.find("section [mission] given twice (first on line 1)"), std::string::npos)
+      << section;
+  // The same key in two sections, and keys before any section, stay fine.
+  EXPECT_NO_THROW(Config::fromText("top = 1\n[a]\nx = 1\n[b]\nx = 2\n", "ok.ini"));
+}
+
 TEST(Config, OverridesReplaceAndAddValues) {
   auto config = Config::fromText("[mission]\nbudget = 600\n", "m.ini");
   config.applyOverride("mission.budget=120");

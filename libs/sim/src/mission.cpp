@@ -84,6 +84,22 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
     boxes.push_back({box.center, box.size, box.rotation, urgent[b] != 0});
   }
 
+  // A feature mission's data reaches a station only from explorers (detections) and inspectors
+  // (results): without a station or an explorer nothing could ever be collected. Generated
+  // fleets are checked when given ([mission] fleet); a scenario file's fleet is checked here.
+  const auto countOf = [&](world::UnitRole role) {
+    return std::count_if(scenario.fleet.begin(), scenario.fleet.end(),
+                         [role](const world::UnitSpec& s) { return s.role == role; });
+  };
+  if (config.objective == Objective::Features &&
+      (countOf(world::UnitRole::GroundStation) == 0 || countOf(world::UnitRole::Explorer) == 0))
+    throw InputError(
+        config.source, "[mission] objective",
+        "a feature mission needs at least one ground station and one explorer; "
+        "the fleet of scenario '" +
+            scenario.name + "' has " + std::to_string(countOf(world::UnitRole::GroundStation)) +
+            " stations and " + std::to_string(countOf(world::UnitRole::Explorer)) + " explorers");
+
   // Explorers' detector ranges, known to the fleet (0 when features are not the objective).
   const auto detectRanges =
       config.objective == Objective::Features
@@ -108,10 +124,7 @@ Mission::Impl::Impl(world::Scenario scenarioIn, MissionConfig configIn, const Co
     battery.chargeRange = config.energy->chargeRange;
     return battery;
   };
-  if (config.energy &&
-      std::none_of(scenario.fleet.begin(), scenario.fleet.end(), [](const world::UnitSpec& s) {
-        return s.role == world::UnitRole::GroundStation;
-      }))
+  if (config.energy && countOf(world::UnitRole::GroundStation) == 0)
     throw InputError(
         config.source, "[energy]",
         "the fleet has no ground station to charge at (scenario '" + scenario.name + "')");

@@ -222,6 +222,24 @@ TEST(FeatureMission, WithoutAMeetingNothingIsCollectedAndTheBudgetEndsIt) {
   EXPECT_TRUE(std::isnan(f.collectedAt[0]));
 }
 
+// A scenario file's fleet without a station or an explorer flew a feature mission that could
+// never collect anything, and exited 0 (fuzzing): it is refused, naming the key and the counts.
+TEST(FeatureMission, AFleetWithoutAStationOrAnExplorerIsRefused) {
+  Seen seen;
+  const auto registry = scripted(12.0, seen);
+  const auto config = Config::fromText(kFeatureMission, "features.ini");
+  auto noStation = featureScene();
+  noStation.fleet[0].role = world::UnitRole::Explorer;
+  std::string message =
+      coinspect::testing::messageOf([&] { Mission(noStation, config, registry); });
+  EXPECT_MENTIONS(message, "features.ini: [mission] objective");
+  EXPECT_MENTIONS(message, "'feature-wall' has 0 stations and 2 explorers");
+  auto noExplorer = featureScene();
+  noExplorer.fleet[1].role = world::UnitRole::Photographer;
+  message = coinspect::testing::messageOf([&] { Mission(noExplorer, config, registry); });
+  EXPECT_MENTIONS(message, "has 1 stations and 0 explorers");
+}
+
 // Several stations (the paper's several GCS): a result counts when any station receives it.
 // Here the first station stands 20 m off, out of everyone's reach; a second one beside the
 // inspector's way back collects everything, and the mission ends.

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <map>
 #include <set>
 #include <sstream>
 
@@ -79,11 +78,10 @@ struct Section {
 };
 
 // Sections in file order. MRPT's getAllSections() returns them sorted by name (SimpleIni's map),
-// and boxes and units must keep the order the author gave them; duplicate sections, which the
-// INI reader would silently merge, are errors here.
+// and boxes and units must keep the order the author gave them (a section given twice is
+// Config's error, before this runs).
 std::vector<Section> sectionsInFileOrder(const std::string& text, const std::string& source) {
   std::vector<Section> sections;
-  std::map<std::string, int> seen;
   std::istringstream lines(text);
   std::string raw;
   for (int line = 1; std::getline(lines, raw); ++line) {
@@ -94,13 +92,7 @@ std::vector<Section> sectionsInFileOrder(const std::string& text, const std::str
         throw InputError(source, "line " + std::to_string(line), "key outside any [section]");
       continue;
     }
-    const std::string name(trim(content.substr(1, content.size() - 2)));
-    const auto [it, inserted] = seen.emplace(toLower(name), line);
-    if (!inserted)
-      throw InputError(
-          source, "line " + std::to_string(line),
-          "duplicate section [" + name + "] (first at line " + std::to_string(it->second) + ")");
-    sections.push_back({name, line});
+    sections.push_back({std::string(trim(content.substr(1, content.size() - 2))), line});
   }
   return sections;
 }

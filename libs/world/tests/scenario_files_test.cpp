@@ -340,7 +340,7 @@ TEST(ScenarioFiles, BadFilesNameFileAndKey) {
   message = messageOf(
       [] { loadScenario(handWritten("scenario_files_duplicate", "[unit.alpha]", "[unit.Zeta]")); });
   EXPECT_MENTIONS(message, "line 28");
-  EXPECT_MENTIONS(message, "duplicate section [unit.Zeta]");
+  EXPECT_MENTIONS(message, "section [unit.Zeta] given twice");
   EXPECT_MENTIONS(message, "line 2");
 
   message = messageOf(

@@ -21,8 +21,10 @@ class Config {
  public:
   // Throws InputError when the file cannot be read.
   static Config fromFile(const std::filesystem::path& path);
-  // `source` names the text in error messages (a file name, "--set", "<generated>").
-  static Config fromText(const std::string& text, const std::string& source);
+  // `source` names the text in error messages (a file name, "--set", "<generated>"); relative
+  // paths in values are taken from `folder` (the current directory when empty).
+  static Config fromText(const std::string& text, const std::string& source,
+                         const std::filesystem::path& folder = {});
 
   Config(Config&&) noexcept;
   Config& operator=(Config&&) noexcept;
@@ -31,7 +33,7 @@ class Config {
   ~Config();
 
   const std::string& source() const { return source_; }
-  // Folder of the file it was read from (for relative paths in values); empty for text.
+  // Folder of the file it was read from (for relative paths in values); for text, fromText's.
   const std::filesystem::path& folder() const { return folder_; }
 
   std::vector<std::string> sections() const;
