@@ -143,12 +143,15 @@ void addDemoCommand(CLI::App& root) {
   auto* demo =
       root.add_subcommand("demo", "Score ideal camera captures on a scenario and print a summary");
   demo->add_option("--scenario", options->scenario, "generator name, scenario.ini or CARIC folder")
+      ->check(nonEmptyPath())
       ->capture_default_str();
   demo->add_option("--seed", options->seed, "generator seed")
       ->check(seedNumber())
       ->capture_default_str();
   demo->add_option("--mode", options->mode, "scoring mode: caric or strict")->capture_default_str();
-  demo->add_option("--out", options->out, "folder for the picture")->capture_default_str();
+  demo->add_option("--out", options->out, "folder for the picture")
+      ->check(nonEmptyPath())
+      ->capture_default_str();
   demo->add_option("--width", options->width, "picture width (px)")
       ->check(CLI::Range(64, 8192))
       ->capture_default_str();

@@ -10,6 +10,7 @@
 #include "coinspect/record/rawlog_reader.h"
 #include "commands.h"
 #include "eval_report.h"
+#include "option_checks.h"
 #include "progress.h"
 #include "recorded_run.h"
 
@@ -72,8 +73,10 @@ void addEvalCommand(CLI::App& root) {
       ->required();
   eval->add_option("--scenario", options->scenario,
                    "scenario SOURCE (generator, scenario.ini, CARIC folder) when the recorded one "
-                   "cannot be found; its content hash must match the recorded one");
-  eval->add_option("--out", options->out, "folder for eval.json and coverage.csv");
+                   "cannot be found; its content hash must match the recorded one")
+      ->check(nonEmptyPath());
+  eval->add_option("--out", options->out, "folder for eval.json and coverage.csv")
+      ->check(nonEmptyPath());
   eval->footer(
       "Exit status: 0 when the rawlog is clean and the re-scored tally equals the recorded one, "
       "1 when the rawlog is damaged (results up to the damage are printed), 2 for bad input, 3 "

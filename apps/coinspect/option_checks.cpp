@@ -34,4 +34,10 @@ CLI::Validator seedNumber() {
       "UINT64", "seed");
 }
 
+CLI::Validator nonEmptyPath() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string { return text.empty() ? "an empty path" : ""; }, "PATH",
+      "path");
+}
+
 }  // namespace coinspect::app

@@ -11,6 +11,7 @@
 #include "coinspect/eval/feature_plot.h"
 #include "commands.h"
 #include "feature_report.h"
+#include "option_checks.h"
 #include "picture_options.h"
 
 namespace coinspect::app {
@@ -113,7 +114,7 @@ void addPlotFeaturesCommand(CLI::App& root) {
   auto* plot = root.add_subcommand(
       "plot-features",
       "Draw features of one stage over mission time, one curve per feature-mission run");
-  plot->add_option("--out", options->out, "the PNG to write")->required();
+  plot->add_option("--out", options->out, "the PNG to write")->check(nonEmptyPath())->required();
   plot->add_option("--size", options->size, "picture size, WIDTHxHEIGHT in pixels")
       ->capture_default_str();
   plot->add_option(

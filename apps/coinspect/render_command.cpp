@@ -8,6 +8,7 @@
 #include "coinspect/eval/run_pictures.h"
 #include "coinspect/eval/run_tracks.h"
 #include "commands.h"
+#include "option_checks.h"
 #include "picture_options.h"
 #include "recorded_run.h"
 
@@ -50,10 +51,13 @@ void addRenderCommand(CLI::App& root) {
       "render", "Draw a recorded run: score plot, top and side views, 3D render, .3Dscene");
   render->add_option("rawlog", options->rawlog, "run.rawlog written by coinspect run --out")
       ->required();
-  render->add_option("--scenario", options->scenario,
-                     "scenario SOURCE (generator, scenario.ini, CARIC folder) when the recorded "
-                     "one cannot be found; its content hash must match the recorded one");
-  render->add_option("--out", options->out, "folder for the pictures (default: the rawlog's)");
+  render
+      ->add_option("--scenario", options->scenario,
+                   "scenario SOURCE (generator, scenario.ini, CARIC folder) when the recorded "
+                   "one cannot be found; its content hash must match the recorded one")
+      ->check(nonEmptyPath());
+  render->add_option("--out", options->out, "folder for the pictures (default: the rawlog's)")
+      ->check(nonEmptyPath());
   render->add_option("--size", options->size, "size of every picture, WIDTHxHEIGHT in pixels")
       ->capture_default_str();
   render->footer(

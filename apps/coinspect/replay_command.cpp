@@ -101,11 +101,15 @@ void addReplayCommand(CLI::App& root) {
       "replay", "Replay a recorded run: print its events, write one PNG frame per 1/fps s");
   replay->add_option("rawlog", options->rawlog, "run.rawlog written by coinspect run --out")
       ->required();
-  replay->add_option("--scenario", options->scenario,
-                     "scenario SOURCE when the recorded one cannot be found (content hash must "
-                     "match)");
-  replay->add_option("--out", options->out,
-                     "folder whose frames/ subfolder gets the frames (default: the rawlog's)");
+  replay
+      ->add_option("--scenario", options->scenario,
+                   "scenario SOURCE when the recorded one cannot be found (content hash must "
+                   "match)")
+      ->check(nonEmptyPath());
+  replay
+      ->add_option("--out", options->out,
+                   "folder whose frames/ subfolder gets the frames (default: the rawlog's)")
+      ->check(nonEmptyPath());
   replay->add_option("--fps", options->fps, "frames per second of mission time")
       ->check(finiteNumberIn(0.01, 1000.0))
       ->capture_default_str();

@@ -103,7 +103,8 @@ void addRunCommand(CLI::App& root) {
       ->check(seedNumber());
   run->add_option("--out", options->out,
                   "folder for run.rawlog, summary.txt, events.csv, score.csv, report.json, "
-                  "<unit>.tum");
+                  "<unit>.tum")
+      ->check(nonEmptyPath());
   run->add_flag("--quiet", options->quiet, "no progress line while the mission flies");
   run->add_option("--threads", options->threads,
                   "threads for the units' decisions and LiDAR sweeps (0, the default: one per "

@@ -225,7 +225,9 @@ void addScenarioCommand(CLI::App& root) {
   generate->add_option("--seed", options->seed, "Seed: varies details, not the shape")
       ->check(seedNumber())
       ->capture_default_str();
-  generate->add_option("--out", options->out, "Output folder (created if missing)")->required();
+  generate->add_option("--out", options->out, "Output folder (created if missing)")
+      ->check(nonEmptyPath())
+      ->required();
   generate->callback([options]() { runGenerate(*options); });
 
   CLI::App* info = scenario->add_subcommand(

@@ -301,13 +301,15 @@ void addScoreCommand(CLI::App& root) {
   command
       ->add_option("--scenario", options->scenario,
                    "CARIC folder, scenario.ini (or its folder) or generator name")
+      ->check(nonEmptyPath())
       ->required();
   command->add_option("--seed", options->seed, "Generator seed (generator names only)")
       ->check(seedNumber());
   command->add_option("--unit", options->unit, "Unit whose camera scores lines without \"unit\"");
   command->add_option("--mode", options->mode, "Scoring mode: caric (reference) or strict")
       ->check(CLI::IsMember({"caric", "strict"}));
-  command->add_option("--input", options->input, "Capture file, JSON lines; - for stdin");
+  command->add_option("--input", options->input, "Capture file, JSON lines; - for stdin")
+      ->check(nonEmptyPath());
   command->add_flag("--all", options->all, "Also list candidate points that are not seen");
   command->callback([options]() { runScore(*options); });
 }

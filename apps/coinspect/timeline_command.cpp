@@ -10,6 +10,7 @@
 #include "coinspect/eval/run_tracks.h"
 #include "coinspect/eval/status_timeline.h"
 #include "commands.h"
+#include "option_checks.h"
 #include "picture_options.h"
 
 namespace coinspect::app {
@@ -91,7 +92,7 @@ void addPlotTimelineCommand(CLI::App& root) {
   auto* plot = root.add_subcommand(
       "plot-timeline",
       "Draw what each unit of a feature-mission run did over mission time, with its meetings");
-  plot->add_option("--out", options->out, "the PNG to write")->required();
+  plot->add_option("--out", options->out, "the PNG to write")->check(nonEmptyPath())->required();
   plot->add_option("--size", options->size, "picture size, WIDTHxHEIGHT in pixels")
       ->capture_default_str();
   plot->add_option("RUN", options->run,

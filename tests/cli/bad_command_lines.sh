@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Bad command lines: exit status 2 and a message naming the option and the value.
+# Bad command lines: exit status 2 and a message naming the option and the value (or that it
+# is empty).
 #   bad_command_lines.sh COINSPECT
 set -euo pipefail
 coinspect=$1
@@ -18,4 +19,10 @@ bash "$expect" 2 "--threads: Value -1 not in range 0 to 256" "$coinspect" run co
 bash "$expect" 2 "--threads: Value two not in range" "$coinspect" run config.ini --threads two
 bash "$expect" 2 "not expected: --bogus" "$coinspect" run config.ini --bogus
 bash "$expect" 2 "bogus not in" "$coinspect" score --scenario hangar --mode bogus
+# Empty paths (`--out ""` once wrote nothing and exited 0; `--scenario ""` was ignored).
+bash "$expect" 2 "--out: an empty path" "$coinspect" run config.ini --out ""
+bash "$expect" 2 "--scenario: an empty path" "$coinspect" eval run.rawlog --scenario ""
+bash "$expect" 2 "--out: an empty path" "$coinspect" render run.rawlog --out ""
+bash "$expect" 2 "--input: an empty path" "$coinspect" score --scenario hangar --input ""
+bash "$expect" 2 "--out: an empty path" "$coinspect" plot-timeline --out "" run
 echo "bad command lines: ok"

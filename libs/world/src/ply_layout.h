@@ -11,7 +11,8 @@ namespace coinspect::world::detail {
 // When the file starts as a PLY file ("ply" on the first line; only then is it read whole):
 // throws InputError naming `source` unless the header ends (end_header) with known formats and
 // property types and the body holds every element it declares (ASCII: enough numbers; binary:
-// enough bytes, list counts read in the file's byte order). Other formats pass unchecked.
+// exactly as many bytes, list counts read in the file's byte order). Other formats pass
+// unchecked.
 void checkPlyLayout(const std::filesystem::path& path, const std::string& source);
 
 }  // namespace coinspect::world::detail

@@ -252,6 +252,7 @@ TEST(MeshIo, AFaceOfNoCornerIsAnError) {
 
 // A PLY file cut short: inside its header Assimp's reader never returned; in its body Assimp
 // padded what was missing and the file loaded as another mesh. Its layout is checked first.
+// Cut short, or holding more than declared.
 TEST(MeshIo, PlyFilesCutShortAreErrors) {
   const fs::path dir = testing::scratchDir("mesh_io_cut_ply");
   writePly(sampleBox(), dir / "box.ply");
@@ -272,6 +273,15 @@ TEST(MeshIo, PlyFilesCutShortAreErrors) {
       {"ascii_vertices.ply", ascii.substr(0, ascii.find("0 1 0")),
        "ends in element 'vertex' 2 of 3"},
       {"ascii_faces.ply", ascii.substr(0, ascii.size() - 3), "ends in element 'face' 0 of 1"},
+      // A damaged count declaring fewer faces than the file holds (it loaded the part declared).
+      {"binary_extra.ply",
+       [&] {
+         std::string fewer = binary;
+         const auto at = fewer.find("element face 12");
+         EXPECT_NE(at, std::string::npos);
+         return fewer.replace(at, 15, "element face 10");
+       }(),
+       "26 bytes after the last element the header declares"},
   };
   for (const auto& c : cases) {
     writeFile(dir / c.name, c.bytes);
