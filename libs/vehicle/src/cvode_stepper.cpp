@@ -4,6 +4,7 @@
 #include <nvector/nvector_serial.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -71,10 +72,14 @@ class CvodeStepper : public OdeStepper {
     // Not an assertion: airframe values (a time constant far below the step) can make the model
     // too stiff for this non-stiff method, and the caller names the airframe.
     const int flag = CVode(memory_, t, y_, &reached, CV_NORMAL);
-    if (flag < 0)
+    if (flag < 0) {
+      // CVodeGetReturnFlagName returns a malloc'ed name that the caller frees.
+      char* name = CVodeGetReturnFlagName(flag);
+      const std::string flagName = name != nullptr ? name : std::to_string(flag);
+      std::free(name);
       throw std::runtime_error("CVODE could not integrate from t = " + std::to_string(reached) +
-                               " s to " + std::to_string(t) + " s (" +
-                               CVodeGetReturnFlagName(flag) + ")");
+                               " s to " + std::to_string(t) + " s (" + flagName + ")");
+    }
     const double* values = N_VGetArrayPointer(y_);
     std::copy(values, values + kStateSize, y.begin());
   }
